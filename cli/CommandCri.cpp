@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `bandlight cri`: CCT, Duv and the CIE 13.3 colour rendering indices.
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/Commands.h"
+#include "cli/Common.h"
+#include "spectral/ColourRendering.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+
+struct CriOptions
+{
+    std::string illuminant;
+    bool json = false;
+};
+
+void RunCri(const CriOptions& o)
+{
+    const NamedSpectrum illuminant = ResolveIlluminant(o.illuminant);
+    const ColourRendering cr = ComputeColourRendering(illuminant.spectrum);
+    if (o.json)
+    {
+        nlohmann::json j;
+        j["illuminant"] = illuminant.name;
+        j["cct_K"] = cr.cctK;
+        j["duv"] = cr.duv;
+        j["Ra"] = cr.ra;
+        j["R"] = cr.r;
+        j["outside_duv_tolerance"] = cr.outsideTolerance;
+        std::cout << j.dump(2) << "\n";
+        return;
+    }
+    std::cout << "Illuminant " << illuminant.name << " (CIE 13.3-1995, CIE 1931 observer)\n"
+              << "  CCT " << Fixed(cr.cctK, 1) << " K, Duv " << Fixed(cr.duv, 5) << "\n"
+              << "  Ra  " << Fixed(cr.ra, 1) << "\n";
+    for (size_t i = 0; i < cr.r.size(); ++i)
+    {
+        std::cout << "  R" << i + 1 << (i + 1 < 10 ? "  " : " ") << Fixed(cr.r[i], 1) << "\n";
+    }
+    if (cr.outsideTolerance)
+    {
+        std::cout << "  note: |Duv| > 5.4e-3: CIE 13.3 does not consider Ra meaningful here\n";
+    }
+}
+
+}  // namespace
+
+void AddCriCommand(CLI::App& app)
+{
+    auto o = std::make_shared<CriOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "cri", "Correlated colour temperature, Duv and colour rendering index (Ra, R1-R14)");
+    cmd->add_option("--illuminant", o->illuminant, "Built-in illuminant or spectrum file")
+        ->required();
+    cmd->add_flag("--json", o->json, "Write JSON");
+    cmd->callback([o] { RunCri(*o); });
+}
+
+}  // namespace bandlight::cli

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace bandlight::cli
+{
+
+/// Each command registers its subcommand and the callback that runs it.
+void AddTablesCommand(CLI::App& app);
+void AddXyzCommand(CLI::App& app);
+void AddCriCommand(CLI::App& app);
+
+}  // namespace bandlight::cli

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/Common.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+bool FileExists(const std::string& path)
+{
+    std::ifstream f(path);
+    return bool(f);
+}
+
+std::string Upper(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+    return s;
+}
+}  // namespace
+
+NamedSpectrum ResolveIlluminant(const std::string& nameOrFile)
+{
+    if (IsBuiltinIlluminant(nameOrFile))
+    {
+        return {CanonicalIlluminantName(nameOrFile), BuiltinIlluminant(nameOrFile)};
+    }
+    if (FileExists(nameOrFile))
+    {
+        return ReadSpectraFile(nameOrFile).front();
+    }
+    BuiltinIlluminant(nameOrFile);  // throws the message listing the choices
+    return {};
+}
+
+std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)
+{
+    const std::string u = Upper(nameOrFile);
+    for (const NamedSpectrum& s : TestColourSamples())
+    {
+        if (s.name == u)
+        {
+            return {s};
+        }
+    }
+    if (u == "TCS" || u == "TCS-ALL")
+    {
+        return TestColourSamples();
+    }
+    if (!FileExists(nameOrFile))
+    {
+        throw Exception("unknown reflectance '" + nameOrFile +
+                        "' (TCS01-TCS15, TCS for all, or a spectrum file)");
+    }
+    return ReadSpectraFile(nameOrFile);
+}
+
+CLI::Option* AddObserverOption(CLI::App& app, std::string& value)
+{
+    value = "1931";
+    return app.add_option("--observer", value, "CIE standard observer: 1931 (2°) or 1964 (10°)")
+        ->capture_default_str();
+}
+
+std::string Fixed(double v, int decimals)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+}  // namespace bandlight::cli

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "spectral/ChromaticAdaptation.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <Eigen/LU>
+
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+
+AdaptationMethod ParseAdaptationMethod(const std::string& text)
+{
+    std::string t = text;
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (t == "vonkries" || t == "von-kries" || t == "xyz" || t == "xyz-scaling")
+    {
+        return AdaptationMethod::XYZ_SCALING;
+    }
+    if (t == "bradford")
+    {
+        return AdaptationMethod::BRADFORD;
+    }
+    if (t == "cat02")
+    {
+        return AdaptationMethod::CAT02;
+    }
+    throw Exception("unknown chromatic adaptation '" + text + "' (vonkries, bradford, cat02)");
+}
+
+Mat3 ConeResponseMatrix(AdaptationMethod method)
+{
+    Mat3 m;
+    switch (method)
+    {
+        case AdaptationMethod::XYZ_SCALING:
+            m.setIdentity();
+            break;
+        case AdaptationMethod::BRADFORD:
+            // clang-format off
+            m <<  0.8951,  0.2664, -0.1614,
+                 -0.7502,  1.7135,  0.0367,
+                  0.0389, -0.0685,  1.0296;
+            break;
+        case AdaptationMethod::CAT02:
+            m <<  0.7328,  0.4296, -0.1624,
+                 -0.7036,  1.6975,  0.0061,
+                  0.0030,  0.0136,  0.9834;
+            // clang-format on
+            break;
+    }
+    return m;
+}
+
+Mat3 AdaptationMatrix(const Vec3& srcWhiteXyz, const Vec3& dstWhiteXyz, AdaptationMethod method)
+{
+    const Mat3 m = ConeResponseMatrix(method);
+    const Vec3 src = m * srcWhiteXyz;
+    const Vec3 dst = m * dstWhiteXyz;
+    if ((src.array() == 0.0).any() || !src.allFinite() || !dst.allFinite())
+    {
+        throw Exception("chromatic adaptation: the source white has a zero cone response");
+    }
+    return m.inverse() * dst.cwiseQuotient(src).asDiagonal() * m;
+}
+
+}  // namespace bandlight

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "spectral/Spectrum.h"
+#include "spectral/SpectrumIO.h"
+
+namespace bandlight
+{
+
+/// The CIE standard colorimetric observers.
+enum class Observer
+{
+    CIE1931_2DEG,   ///< CIE 1931 2° (CIE 15:2004 Table T.4)
+    CIE1964_10DEG,  ///< CIE 1964 10° (CIE 15:2004 Table T.5)
+};
+
+/// "1931" / "1964" (also "2", "10", "cie1931"...); throws Exception otherwise.
+Observer ParseObserver(const std::string& text);
+const char* ObserverName(Observer observer);
+
+/// Colour-matching functions x̄, ȳ, z̄ of an observer, 360–830 nm at 5 nm,
+/// as tabulated (ȳ peaks at 1.0 at 555 nm).
+struct MatchingFunctions
+{
+    Spectrum x;
+    Spectrum y;
+    Spectrum z;
+};
+
+const MatchingFunctions& GetMatchingFunctions(Observer observer);
+
+/// The CIE daylight basis S0, S1, S2 (CIE 15:2004 Table T.2), 300–830 nm at 5 nm.
+struct DaylightBasis
+{
+    Spectrum s0;
+    Spectrum s1;
+    Spectrum s2;
+};
+
+const DaylightBasis& GetDaylightBasis();
+
+/// The CIE 13.3 test colour samples TCS01–TCS14 and TCS15, spectral
+/// radiance factors 360–830 nm at 5 nm, in order.
+const std::vector<NamedSpectrum>& TestColourSamples();
+
+/// The tabulated illuminants carried in data/: A, C, D50, D55, D65, E,
+/// F1–F12, in that order, each on its own table's range at 5 nm.
+const std::vector<NamedSpectrum>& TabulatedIlluminants();
+
+}  // namespace bandlight

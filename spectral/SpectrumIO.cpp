@@ -1,0 +1,441 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "spectral/SpectrumIO.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+namespace
+{
+
+[[noreturn]] void Fail(const std::string& source, size_t line, const std::string& what)
+{
+    throw Exception(SourcePosition(source, line) + ": " + what);
+}
+
+/// Parses a whole token as a finite double; NaN, Inf and trailing garbage
+/// are errors (a spectrum with them would poison every integral).
+double ParseNumber(const std::string& token, const std::string& source, size_t line,
+                   const char* what)
+{
+    const char* begin = token.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (end == begin || *end != '\0')
+    {
+        Fail(source, line, std::string("expected a number for ") + what + ", got '" + token + "'");
+    }
+    if (!std::isfinite(v) || errno == ERANGE)
+    {
+        Fail(source, line,
+             std::string("value out of range for ") + what + ": '" + token + "'");
+    }
+    return v;
+}
+
+std::string Trim(const std::string& s)
+{
+    const size_t a = s.find_first_not_of(" \t\r\n\"");
+    if (a == std::string::npos)
+    {
+        return {};
+    }
+    const size_t b = s.find_last_not_of(" \t\r\n\"");
+    return s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> SplitCsv(const std::string& line)
+{
+    std::vector<std::string> out;
+    const bool hasDelimiter = line.find_first_of(",;\t") != std::string::npos;
+    std::string cur;
+    for (char c : line)
+    {
+        const bool sep = hasDelimiter ? (c == ',' || c == ';' || c == '\t') : (c == ' ');
+        if (sep)
+        {
+            if (hasDelimiter || !cur.empty())
+            {
+                out.push_back(Trim(cur));
+            }
+            cur.clear();
+        }
+        else
+        {
+            cur += c;
+        }
+    }
+    if (hasDelimiter || !Trim(cur).empty())
+    {
+        out.push_back(Trim(cur));
+    }
+    return out;
+}
+
+bool LooksNumeric(const std::string& s)
+{
+    if (s.empty())
+    {
+        return false;
+    }
+    char* end = nullptr;
+    std::strtod(s.c_str(), &end);
+    return end != s.c_str() && *end == '\0';
+}
+
+/// Builds a regular-grid spectrum from increasing (wavelength, value)
+/// pairs; an irregular grid is resampled onto its smallest step.
+Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v)
+{
+    if (wl.size() == 1)
+    {
+        return Spectrum(wl[0], 1.0, v);
+    }
+    double minStep = wl[1] - wl[0];
+    double maxStep = minStep;
+    for (size_t i = 1; i < wl.size(); ++i)
+    {
+        minStep = std::min(minStep, wl[i] - wl[i - 1]);
+        maxStep = std::max(maxStep, wl[i] - wl[i - 1]);
+    }
+    if (maxStep - minStep <= 1e-6 * maxStep)
+    {
+        const double step = (wl.back() - wl.front()) / double(wl.size() - 1);
+        return Spectrum(wl.front(), step, v);
+    }
+    const size_t count = size_t(std::floor((wl.back() - wl.front()) / minStep + 1e-9)) + 1;
+    std::vector<double> out(count);
+    size_t j = 0;
+    for (size_t i = 0; i < count; ++i)
+    {
+        const double x = wl.front() + minStep * double(i);
+        while (j + 2 < wl.size() && wl[j + 1] < x)
+        {
+            ++j;
+        }
+        const double f = std::clamp((x - wl[j]) / (wl[j + 1] - wl[j]), 0.0, 1.0);
+        out[i] = v[j] + f * (v[j + 1] - v[j]);
+    }
+    return Spectrum(wl.front(), minStep, std::move(out));
+}
+
+}  // namespace
+
+std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& source)
+{
+    std::vector<std::string> names;
+    std::vector<double> wl;
+    std::vector<std::vector<double>> columns;
+    std::string line;
+    size_t lineNo = 0;
+    size_t columnCount = 0;
+    size_t headerLine = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        const std::string t = Trim(line);
+        if (t.empty() || t[0] == '#')
+        {
+            continue;
+        }
+        std::vector<std::string> cells = SplitCsv(line);
+        if (columnCount == 0)
+        {
+            columnCount = cells.size();
+            if (columnCount < 2)
+            {
+                Fail(source, lineNo,
+                     "expected a wavelength column and at least one spectrum, got '" + t + "'");
+            }
+            columns.resize(columnCount - 1);
+            if (!LooksNumeric(cells[0]))
+            {
+                headerLine = lineNo;
+                names.assign(cells.begin() + 1, cells.end());
+                continue;
+            }
+            for (size_t c = 1; c < columnCount; ++c)
+            {
+                names.push_back(std::to_string(c));
+            }
+        }
+        if (cells.size() != columnCount)
+        {
+            Fail(source, lineNo,
+                 "expected " + std::to_string(columnCount) + " columns, got " +
+                     std::to_string(cells.size()) + " in '" + t + "'");
+        }
+        const double w = ParseNumber(cells[0], source, lineNo, "the wavelength");
+        if (!wl.empty() && !(w > wl.back()))
+        {
+            Fail(source, lineNo,
+                 "wavelengths must increase: " + cells[0] + " nm follows " +
+                     std::to_string(wl.back()) + " nm");
+        }
+        if (w <= 0.0)
+        {
+            Fail(source, lineNo, "wavelength must be positive, got '" + cells[0] + "'");
+        }
+        wl.push_back(w);
+        for (size_t c = 1; c < columnCount; ++c)
+        {
+            columns[c - 1].push_back(ParseNumber(cells[c], source, lineNo, "a spectral value"));
+        }
+    }
+    if (wl.size() < 2)
+    {
+        Fail(source, wl.empty() ? headerLine : lineNo,
+             "fewer than two wavelength rows: not a spectrum");
+    }
+    std::vector<NamedSpectrum> out;
+    for (size_t c = 0; c < columns.size(); ++c)
+    {
+        out.push_back({names[c], FromSamples(wl, columns[c])});
+    }
+    return out;
+}
+
+namespace
+{
+
+struct Token
+{
+    std::string text;
+    size_t line;
+};
+
+/// Splits CGATS text into tokens, honouring "quoted strings" and '#' comments.
+std::vector<Token> TokenizeCgats(std::istream& in)
+{
+    std::vector<Token> tokens;
+    std::string line;
+    size_t lineNo = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        size_t i = 0;
+        while (i < line.size())
+        {
+            const char c = line[i];
+            if (c == ' ' || c == '\t' || c == '\r')
+            {
+                ++i;
+            }
+            else if (c == '#')
+            {
+                break;
+            }
+            else if (c == '"')
+            {
+                const size_t close = line.find('"', i + 1);
+                const size_t stop = close == std::string::npos ? line.size() : close;
+                tokens.push_back({line.substr(i + 1, stop - i - 1), lineNo});
+                i = stop + 1;
+            }
+            else
+            {
+                const size_t stop = line.find_first_of(" \t\r", i);
+                const size_t e = stop == std::string::npos ? line.size() : stop;
+                tokens.push_back({line.substr(i, e - i), lineNo});
+                i = e;
+            }
+        }
+    }
+    return tokens;
+}
+
+/// Wavelength encoded in a SPEC_ field name: "SPEC_380" is 380 nm; ArgyllCMS
+/// writes fractional grids with more digits ("SPEC_300000" in a 1 nm table
+/// of 531 bands), which the SPECTRAL_* keywords then resolve.
+double FieldWavelength(const std::string& field)
+{
+    return std::strtod(field.c_str() + 5, nullptr);
+}
+
+}  // namespace
+
+std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string& source)
+{
+    const std::vector<Token> tokens = TokenizeCgats(in);
+    if (tokens.empty())
+    {
+        Fail(source, 0, "empty file: not a CGATS file");
+    }
+    const std::string fileType = tokens[0].text;
+    std::map<std::string, Token> keywords;
+    std::vector<Token> fields;
+    std::vector<Token> data;
+    size_t i = 1;
+    bool haveTable = false;
+    while (i < tokens.size())
+    {
+        const Token& t = tokens[i];
+        if (t.text == "BEGIN_DATA_FORMAT")
+        {
+            fields.clear();
+            for (++i; i < tokens.size() && tokens[i].text != "END_DATA_FORMAT"; ++i)
+            {
+                fields.push_back(tokens[i]);
+            }
+            if (i == tokens.size())
+            {
+                Fail(source, t.line, "BEGIN_DATA_FORMAT without END_DATA_FORMAT");
+            }
+            ++i;
+        }
+        else if (t.text == "BEGIN_DATA")
+        {
+            data.clear();
+            for (++i; i < tokens.size() && tokens[i].text != "END_DATA"; ++i)
+            {
+                data.push_back(tokens[i]);
+            }
+            if (i == tokens.size())
+            {
+                Fail(source, data.empty() ? t.line : data.back().line,
+                     "BEGIN_DATA without END_DATA (truncated file?)");
+            }
+            ++i;
+            const bool spectral = std::any_of(fields.begin(), fields.end(), [](const Token& f) {
+                return f.text.rfind("SPEC_", 0) == 0;
+            });
+            if (spectral)
+            {
+                haveTable = true;
+                break;
+            }
+            // A table without spectra (a ti3's calibration table): skip it
+            // and start the next table's keywords afresh.
+            keywords.clear();
+        }
+        else if (t.text == "KEYWORD")
+        {
+            i += 2;
+        }
+        else if (i + 1 < tokens.size() && !LooksNumeric(t.text))
+        {
+            keywords[t.text] = tokens[i + 1];
+            i += 2;
+        }
+        else
+        {
+            ++i;
+        }
+    }
+    if (!haveTable)
+    {
+        Fail(source, 0, "no spectral data (no SPEC_ fields in a BEGIN_DATA_FORMAT table)");
+    }
+
+    std::vector<size_t> specColumns;
+    size_t idColumn = fields.size();
+    for (size_t c = 0; c < fields.size(); ++c)
+    {
+        const std::string& f = fields[c].text;
+        if (f.rfind("SPEC_", 0) == 0)
+        {
+            specColumns.push_back(c);
+        }
+        else if ((f == "SAMPLE_ID" || f == "SAMPLE_NAME" || f == "SAMPLE_LOC") &&
+                 idColumn == fields.size())
+        {
+            idColumn = c;
+        }
+    }
+    auto keywordNumber = [&](const char* key, double fallback) {
+        const auto it = keywords.find(key);
+        return it == keywords.end() ? fallback
+                                    : ParseNumber(it->second.text, source, it->second.line, key);
+    };
+    const size_t bands = specColumns.size();
+    double start = keywordNumber("SPECTRAL_START_NM", FieldWavelength(fields[specColumns.front()].text));
+    double end = keywordNumber("SPECTRAL_END_NM", FieldWavelength(fields[specColumns.back()].text));
+    const double declaredBands = keywordNumber("SPECTRAL_BANDS", double(bands));
+    if (size_t(declaredBands) != bands)
+    {
+        Fail(source, keywords["SPECTRAL_BANDS"].line,
+             "SPECTRAL_BANDS says " + keywords["SPECTRAL_BANDS"].text + " but the format has " +
+                 std::to_string(bands) + " SPEC_ fields");
+    }
+    if (bands < 2 || !(end > start))
+    {
+        Fail(source, fields[specColumns.front()].line,
+             "spectral range must hold at least two increasing wavelengths");
+    }
+    double norm = keywordNumber("SPECTRAL_NORM", fileType == "CTI3" ? 100.0 : 1.0);
+    if (!(norm > 0.0))
+    {
+        Fail(source, keywords["SPECTRAL_NORM"].line, "SPECTRAL_NORM must be positive");
+    }
+
+    const size_t nf = fields.size();
+    if (data.size() % nf != 0)
+    {
+        Fail(source, data.empty() ? 0 : data.back().line,
+             "data has " + std::to_string(data.size()) + " values, not a multiple of the " +
+                 std::to_string(nf) + " fields (truncated row?)");
+    }
+    const size_t sets = data.size() / nf;
+    const auto declaredSets = keywords.find("NUMBER_OF_SETS");
+    if (declaredSets != keywords.end() &&
+        ParseNumber(declaredSets->second.text, source, declaredSets->second.line,
+                    "NUMBER_OF_SETS") != double(sets))
+    {
+        Fail(source, declaredSets->second.line,
+             "NUMBER_OF_SETS says " + declaredSets->second.text + " but the data has " +
+                 std::to_string(sets) + " sets");
+    }
+    const double step = (end - start) / double(bands - 1);
+    std::vector<NamedSpectrum> out;
+    for (size_t s = 0; s < sets; ++s)
+    {
+        std::vector<double> v(bands);
+        for (size_t b = 0; b < bands; ++b)
+        {
+            const Token& tok = data[s * nf + specColumns[b]];
+            v[b] = ParseNumber(tok.text, source, tok.line, fields[specColumns[b]].text.c_str()) /
+                   norm;
+        }
+        std::string name =
+            idColumn < nf ? data[s * nf + idColumn].text : std::to_string(s + 1);
+        out.push_back({std::move(name), Spectrum(start, step, std::move(v))});
+    }
+    return out;
+}
+
+std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source)
+{
+    std::istringstream in(text);
+    if (text.find("BEGIN_DATA_FORMAT") != std::string::npos)
+    {
+        return ReadCgatsSpectra(in, source);
+    }
+    return ReadCsvSpectra(in, source);
+}
+
+std::vector<NamedSpectrum> ReadSpectraFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+    {
+        throw Exception(path + ": cannot open spectrum file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+    {
+        throw Exception(path + ": read error");
+    }
+    return ReadSpectraText(text.str(), path);
+}
+
+}  // namespace bandlight

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "spectral/Spectrum.h"
+
+namespace bandlight
+{
+
+/// A spectrum read from a file, with the identifier the file gives it
+/// (a CSV column header, a CGATS SAMPLE_ID / SAMPLE_NAME, or its 1-based
+/// position when the file names none).
+struct NamedSpectrum
+{
+    std::string name;
+    Spectrum spectrum;
+};
+
+/// Reads spectra from CSV text: optional '#' comment lines, an optional
+/// header row (first column the wavelength in nm, then one name per
+/// spectrum), then rows "wavelength, v1, v2, ..." separated by commas,
+/// semicolons, tabs or spaces. Wavelengths must increase; an irregular grid
+/// is resampled linearly onto its smallest step. `source` names the input
+/// in error messages ("FILE:LINE: ...").
+std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& source);
+
+/// Reads the spectral sets of a CGATS file as written by ArgyllCMS and
+/// colord (.sp, .cmf, .ti3, .cie): the grid from SPECTRAL_START_NM /
+/// SPECTRAL_END_NM / SPECTRAL_BANDS (or the SPEC_nnn field names), the
+/// values divided by SPECTRAL_NORM when present and, for CTI3 files that
+/// give no SPECTRAL_NORM, by 100 (ArgyllCMS stores .ti3 remittances in
+/// percent). The first table with SPEC_ fields is read.
+std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string& source);
+
+/// Reads a file of spectra, choosing the reader from its content (a CGATS
+/// file has BEGIN_DATA_FORMAT) so that either kind may carry any extension.
+std::vector<NamedSpectrum> ReadSpectraFile(const std::string& path);
+
+/// The same for text already in memory (used for the embedded tables).
+std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source);
+
+}  // namespace bandlight
