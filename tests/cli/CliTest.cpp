@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// End-to-end tests of the bandlight command: output shapes, exit codes, errors,
+// and agreement with ArgyllCMS spec2cie.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+
+using namespace bandlight;
+using Catch::Matchers::Contains;
+
+namespace
+{
+
+struct Result
+{
+    int code = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string TempPath(const std::string& name)
+{
+    const char* dir = std::getenv("TMPDIR");
+    return std::string(dir ? dir : "/tmp") + "/bandlight_cli_test_" + name;
+}
+
+/// Runs a shell command line; captures stdout, stderr and the exit code.
+Result Run(const std::string& args, const std::string& exe = BANDLIGHT_EXE)
+{
+    const std::string errFile = TempPath("stderr.txt");
+    const std::string cmd = "'" + exe + "' " + args + " 2>'" + errFile + "'";
+    Result r;
+    FILE* p = popen(cmd.c_str(), "r");
+    REQUIRE(p);
+    char buf[4096];
+    size_t n = 0;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0)
+    {
+        r.out.append(buf, n);
+    }
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    std::stringstream s;
+    s << e.rdbuf();
+    r.err = s.str();
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("tables --json has the documented shape", "[cli]")
+{
+    const Result r = Run("tables --json");
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    REQUIRE(j["bands"].size() == 3);
+    CHECK(j["bands"][0]["name"] == "VB");
+    CHECK(j["bands"][0]["min_nm"] == 400);
+    CHECK(j["bands"][2]["max_nm"] == 700);
+    CHECK(j["matching_functions"]["cie1931_xyz"]["y"][1].get<double>() ==
+          Approx(0.7506).margin(1e-4));
+    CHECK(j["matching_functions"]["ebu_rgb"]["r"].size() == 3);
+    CHECK(j["illuminants"]["F11"][1] == 1.0);
+    CHECK(j["illuminants"].contains("D75"));
+    CHECK(j["remittances"].size() == 15);
+    CHECK(j["remittances"]["TCS01"][0].get<double>() == Approx(0.23));
+}
+
+TEST_CASE("tables accepts other bands and observers", "[cli]")
+{
+    const Result r = Run("tables --bands 400,450,500,550,600,650,700 --observer 1964 --json");
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    CHECK(j["bands"].size() == 6);
+    CHECK(j["matching_functions"].contains("cie1964_xyz"));
+    CHECK(j["illuminants"]["D65"].size() == 6);
+}
+
+TEST_CASE("xyz: one row per sample in file order, keyed by sample id", "[cli]")
+{
+    const std::string path = TempPath("two.csv");
+    std::ofstream(path) << "wavelength,grey50,white\n380,0.5,1\n780,0.5,1\n";
+    const Result r = Run("xyz --illuminant d65 --reflectance '" + path + "' --json");
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    CHECK(j["illuminant"] == "D65");
+    REQUIRE(j["samples"].size() == 2);
+    CHECK(j["samples"][0]["id"] == "grey50");
+    CHECK(j["samples"][0]["XYZ"][1].get<double>() == Approx(50.0));
+    CHECK(j["samples"][1]["Lab"][0].get<double>() == Approx(100.0));
+    CHECK(j["samples"][1]["xy"][0].get<double>() == Approx(0.31272).margin(1e-4));
+}
+
+TEST_CASE("cri --json has the documented shape", "[cli]")
+{
+    const Result r = Run("cri --illuminant F11 --json");
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    CHECK(j["illuminant"] == "F11");
+    CHECK(j["cct_K"].get<double>() == Approx(4000).margin(15));
+    CHECK(std::lround(j["Ra"].get<double>()) == 83);  // CIE 15:2004 Table T.8.2
+    CHECK(j["R"].size() == 14);
+    CHECK(j.contains("duv"));
+}
+
+TEST_CASE("Bad input: one line on stderr and exit code 2", "[cli]")
+{
+    Result r = Run("xyz --illuminant Tungsten");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("unknown illuminant 'Tungsten'"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+
+    const std::string bad = TempPath("bad.csv");
+    std::ofstream(bad) << "wavelength,x\n400,0.1\n410,oops\n";
+    r = Run("xyz --illuminant D65 --reflectance '" + bad + "'");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains(bad + ":3: expected a number for a spectral value, got 'oops'"));
+
+    r = Run("cri --illuminant '" + bad + "'");
+    CHECK(r.code == 2);
+    r = Run("tables --bands 500,400");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("empty or not increasing"));
+    r = Run("tables --observer 1951");
+    CHECK(r.code == 2);
+    r = Run("frobnicate");
+    CHECK(r.code == 2);
+}
+
+TEST_CASE("--help works on every command", "[cli]")
+{
+    for (const char* cmd : {"", "tables ", "xyz ", "cri "})
+    {
+        const Result r = Run(std::string(cmd) + "--help");
+        INFO(cmd);
+        CHECK(r.code == 0);
+        CHECK_THAT(r.out, Contains("Usage"));
+    }
+}
+
+#ifdef SPEC2CIE_EXE
+TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli][argyll]")
+{
+    // A .ti3 of TCS01–TCS14 in percent, as ArgyllCMS stores remittances.
+    const std::string ti3 = TempPath("tcs.ti3");
+    {
+        std::ofstream f(ti3);
+        const Spectrum& s0 = TestColourSamples()[0].spectrum;
+        f << "CTI3\n\nDESCRIPTOR \"CIE 13.3 test colour samples\"\nDEVICE_CLASS \"OUTPUT\"\n"
+          << "SPECTRAL_BANDS \"" << s0.size() << "\"\nSPECTRAL_START_NM \"" << s0.start()
+          << "\"\nSPECTRAL_END_NM \"" << s0.end() << "\"\n\nNUMBER_OF_FIELDS " << s0.size() + 1
+          << "\nBEGIN_DATA_FORMAT\nSAMPLE_ID";
+        for (size_t i = 0; i < s0.size(); ++i)
+        {
+            f << " SPEC_" << int(s0.wavelength(i));
+        }
+        f << "\nEND_DATA_FORMAT\n\nNUMBER_OF_SETS 14\nBEGIN_DATA\n";
+        for (size_t k = 0; k < 14; ++k)
+        {
+            f << TestColourSamples()[k].name;
+            for (double v : TestColourSamples()[k].spectrum.values())
+            {
+                f << " " << std::fixed << std::setprecision(4) << v * 100.0;
+            }
+            f << "\n";
+        }
+        f << "END_DATA\n";
+    }
+    for (const char* illuminant : {"D65", "A"})
+    {
+        const std::string out = TempPath(std::string("tcs_") + illuminant + ".ti3");
+        std::remove(out.c_str());
+        const Result argyll = Run(std::string("-n -i ") + illuminant + " -o 1931_2 '" + ti3 +
+                                      "' '" + out + "'",
+                                  SPEC2CIE_EXE);
+        REQUIRE(argyll.code == 0);
+        // Pull SAMPLE_ID and XYZ_X/Y/Z out of spec2cie's CGATS output.
+        std::ifstream in(out);
+        std::string line;
+        std::vector<std::string> fields;
+        std::vector<std::vector<std::string>> rows;
+        bool inFormat = false, inData = false;
+        while (std::getline(in, line))
+        {
+            std::istringstream t(line);
+            std::vector<std::string> tok;
+            for (std::string w; t >> w;)
+            {
+                tok.push_back(w);
+            }
+            if (tok.empty())
+            {
+                continue;
+            }
+            if (tok[0] == "BEGIN_DATA_FORMAT" || tok[0] == "BEGIN_DATA")
+            {
+                (tok[0] == "BEGIN_DATA" ? inData : inFormat) = true;
+            }
+            else if (tok[0] == "END_DATA_FORMAT" || tok[0] == "END_DATA")
+            {
+                inFormat = inData = false;
+            }
+            else if (inFormat)
+            {
+                fields.insert(fields.end(), tok.begin(), tok.end());
+            }
+            else if (inData)
+            {
+                rows.push_back(tok);
+            }
+        }
+        auto column = [&](const std::string& name) {
+            return size_t(std::find(fields.begin(), fields.end(), name) - fields.begin());
+        };
+        REQUIRE(rows.size() == 14);
+        REQUIRE(column("XYZ_X") < fields.size());
+
+        const Result ours = Run(std::string("xyz --illuminant ") + illuminant +
+                                " --reflectance '" + ti3 + "' --json");
+        REQUIRE(ours.code == 0);
+        const nlohmann::json j = nlohmann::json::parse(ours.out);
+        REQUIRE(j["samples"].size() == 14);
+        const Vec3 white(j["white_XYZ"][0], j["white_XYZ"][1], j["white_XYZ"][2]);
+        double worstXyz = 0.0, worstDe = 0.0;
+        for (size_t k = 0; k < 14; ++k)
+        {
+            const Vec3 a(std::stod(rows[k][column("XYZ_X")]), std::stod(rows[k][column("XYZ_Y")]),
+                         std::stod(rows[k][column("XYZ_Z")]));
+            const Vec3 b(j["samples"][k]["XYZ"][0], j["samples"][k]["XYZ"][1],
+                         j["samples"][k]["XYZ"][2]);
+            INFO(illuminant << " " << rows[k][column("SAMPLE_ID")] << ": spec2cie " << a.transpose()
+                            << ", bandlight " << b.transpose());
+            CHECK(j["samples"][k]["id"] == rows[k][column("SAMPLE_ID")]);
+            worstXyz = std::max(worstXyz, (a - b).cwiseAbs().maxCoeff());
+            worstDe = std::max(worstDe, DeltaE2000(XyzToLab(a, white), XyzToLab(b, white)));
+        }
+    }
+}
+#endif

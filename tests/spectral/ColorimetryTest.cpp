@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <fstream>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "spectral/Colorimetry.h"
+#include "spectral/Illuminants.h"
+
+using namespace bandlight;
+
+TEST_CASE("CIEDE2000 reproduces all 34 pairs of Sharma, Wu & Dalal (2005)", "[spectral][published]")
+{
+    // Table 1 of G. Sharma, W. Wu, E. N. Dalal, Color Res. Appl. 30(1):21-30, 2005.
+    std::ifstream in(std::string(BANDLIGHT_TEST_DATA) + "/ciede2000_sharma2005.csv");
+    REQUIRE(in);
+    std::string line;
+    int pairs = 0;
+    while (std::getline(in, line))
+    {
+        if (line.empty() || line[0] == '#' || line[0] == 'p')
+        {
+            continue;
+        }
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream row(line);
+        int id = 0;
+        Vec3 lab1, lab2;
+        double expected = 0.0;
+        row >> id >> lab1.x() >> lab1.y() >> lab1.z() >> lab2.x() >> lab2.y() >> lab2.z() >>
+            expected;
+        REQUIRE(row);
+        INFO("pair " << id);
+        CHECK(DeltaE2000(lab1, lab2) == Approx(expected).margin(0.5e-4));
+        CHECK(DeltaE2000(lab2, lab1) == Approx(expected).margin(0.5e-4));
+        ++pairs;
+    }
+    CHECK(pairs == 34);
+}
+
+TEST_CASE("CIEDE2000 is zero for identical colours", "[spectral]")
+{
+    const Vec3 lab(50.0, 10.0, -20.0);
+    CHECK(DeltaE2000(lab, lab) == 0.0);
+    CHECK(DeltaE2000(Vec3(50, 0, 0), Vec3(50, 0, 0)) == 0.0);
+}
+
+TEST_CASE("CIELAB round-trips and puts the white at L* = 100", "[spectral]")
+{
+    const Vec3 white = IlluminantWhiteXyz(BuiltinIlluminant("D65"), Observer::CIE1931_2DEG);
+    const Vec3 labWhite = XyzToLab(white, white);
+    CHECK(labWhite.x() == Approx(100.0));
+    CHECK(labWhite.y() == Approx(0.0).margin(1e-12));
+    for (const Vec3& xyz : {Vec3(20.0, 30.0, 40.0), Vec3(0.1, 0.2, 0.05), Vec3(90, 95, 100)})
+    {
+        const Vec3 back = LabToXyz(XyzToLab(xyz, white), white);
+        CHECK((back - xyz).norm() < 1e-10);
+    }
+    CHECK(DeltaE76(Vec3(50, 3, 4), Vec3(50, 0, 0)) == Approx(5.0));
+}
+
+TEST_CASE("xyY and CIE 1960 uv of the equal-energy white", "[spectral]")
+{
+    const Vec3 e(1.0, 1.0, 1.0);
+    CHECK(XyzToxyY(e).x() == Approx(1.0 / 3.0));
+    CHECK((xyYToXyz(XyzToxyY(e)) - e).norm() < 1e-12);
+    CHECK(XyzToUv1960(e).x() == Approx(4.0 / 19.0));
+    CHECK(XyzToUv1960(e).y() == Approx(6.0 / 19.0));
+    CHECK(XyzToxyY(Vec3::Zero()) == Vec3::Zero());
+}
+
+TEST_CASE("Surface XYZ: the perfect white reflector has Y = 100", "[spectral]")
+{
+    for (const char* name : {"A", "D65", "F11"})
+    {
+        const Spectrum s = BuiltinIlluminant(name);
+        const Spectrum white = Spectrum::Constant(360.0, 5.0, 95, 1.0);
+        CHECK(SurfaceXyz(white, s, Observer::CIE1931_2DEG).y() == Approx(100.0));
+        CHECK(SurfaceXyz(white, s, Observer::CIE1964_10DEG).y() == Approx(100.0));
+        CHECK((SurfaceXyz(white, s, Observer::CIE1931_2DEG) -
+               IlluminantWhiteXyz(s, Observer::CIE1931_2DEG))
+                  .norm() < 1e-10);
+    }
+}
+
+TEST_CASE("The precomputed integrator agrees with the reference path", "[spectral]")
+{
+    const Spectrum f11 = BuiltinIlluminant("F11");
+    const XyzIntegrator fast(f11, Observer::CIE1931_2DEG);
+    for (const NamedSpectrum& tcs : TestColourSamples())
+    {
+        const Vec3 ref = SurfaceXyz(tcs.spectrum, f11, Observer::CIE1931_2DEG);
+        CHECK((fast(tcs.spectrum) - ref).norm() < 1e-10);
+    }
+}
+
+TEST_CASE("Equal-energy normalisation maps E to (1, 1, 1)", "[spectral]")
+{
+    const Spectrum e = Spectrum::Constant(380.0, 5.0, 81, 1.0);
+    const Vec3 v = EqualEnergyNormalisedXyz(e, Observer::CIE1931_2DEG);
+    CHECK(v.x() == Approx(1.0));
+    CHECK(v.y() == Approx(1.0));
+    CHECK(v.z() == Approx(1.0));
+    const Vec3 half = EqualEnergyNormalisedXyz(e * 0.5, Observer::CIE1964_10DEG);
+    CHECK(half.y() == Approx(0.5));
+}
