@@ -27,7 +27,7 @@ void RunCri(const CriOptions& o)
     const ColourRendering cr = ComputeColourRendering(illuminant.spectrum);
     if (o.json)
     {
-        nlohmann::json j;
+        nlohmann::ordered_json j;
         j["illuminant"] = illuminant.name;
         j["cct_K"] = cr.cctK;
         j["duv"] = cr.duv;

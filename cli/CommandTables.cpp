@@ -25,9 +25,9 @@ struct TablesOptions
     bool json = false;
 };
 
-nlohmann::json RowsJson(const Eigen::MatrixXd& m, const char* names[3])
+nlohmann::ordered_json RowsJson(const Eigen::MatrixXd& m, const char* names[3])
 {
-    nlohmann::json j;
+    nlohmann::ordered_json j;
     for (int k = 0; k < 3; ++k)
     {
         std::vector<double> row(size_t(m.cols()));
@@ -88,8 +88,8 @@ void RunTables(const TablesOptions& o)
     {
         const char* xyzNames[3] = {"x", "y", "z"};
         const char* rgbNames[3] = {"r", "g", "b"};
-        nlohmann::json j;
-        j["bands"] = nlohmann::json::array();
+        nlohmann::ordered_json j;
+        j["bands"] = nlohmann::ordered_json::array();
         for (const Band& b : bands)
         {
             j["bands"].push_back({{"name", b.name}, {"min_nm", b.minNm}, {"max_nm", b.maxNm}});
@@ -99,12 +99,12 @@ void RunTables(const TablesOptions& o)
         j["rule"] = rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact";
         j["matching_functions"][key] = RowsJson(xyz, xyzNames);
         j["matching_functions"]["ebu_rgb"] = RowsJson(rgb, rgbNames);
-        j["illuminants"] = nlohmann::json::object();
+        j["illuminants"] = nlohmann::ordered_json::object();
         for (const auto& [name, v] : illuminants)
         {
             j["illuminants"][name] = v;
         }
-        j["remittances"] = nlohmann::json::object();
+        j["remittances"] = nlohmann::ordered_json::object();
         for (const auto& [name, v] : remittances)
         {
             j["remittances"][name] = v;
@@ -113,10 +113,11 @@ void RunTables(const TablesOptions& o)
         return;
     }
 
-    std::cout << "Band model tables: bands " << bands.describe() << " nm, " << ObserverName(observer)
-              << " observer, " << (rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact")
-              << " band means\n";
-    auto row = [](const Eigen::MatrixXd& m, int k) {
+    std::cout << "Band model tables: bands " << bands.describe() << " nm, "
+              << ObserverName(observer) << " observer, "
+              << (rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact") << " band means\n";
+    auto row = [](const Eigen::MatrixXd& m, int k)
+    {
         std::vector<double> v(size_t(m.cols()));
         for (Eigen::Index b = 0; b < m.cols(); ++b)
         {
@@ -154,7 +155,8 @@ void AddTablesCommand(CLI::App& app)
     auto o = std::make_shared<TablesOptions>();
     CLI::App* cmd = app.add_subcommand(
         "tables", "Print the lecture's band tables: matching functions, illuminants, remittances");
-    cmd->add_option("--bands", o->bands, "Band edges in nm, comma separated")->capture_default_str();
+    cmd->add_option("--bands", o->bands, "Band edges in nm, comma separated")
+        ->capture_default_str();
     AddObserverOption(*cmd, o->observer);
     cmd->add_option("--rule", o->rule, "Band mean rule: lecture (sample average) or exact")
         ->capture_default_str();

@@ -50,11 +50,11 @@ void RunXyz(const XyzOptions& o)
 
     if (o.json)
     {
-        nlohmann::json j;
+        nlohmann::ordered_json j;
         j["illuminant"] = illuminant.name;
         j["observer"] = observer == Observer::CIE1931_2DEG ? "1931" : "1964";
         j["white_XYZ"] = {white.x(), white.y(), white.z()};
-        j["samples"] = nlohmann::json::array();
+        j["samples"] = nlohmann::ordered_json::array();
         for (const Row& r : rows)
         {
             const Vec3 xyY = XyzToxyY(r.xyz);
@@ -104,8 +104,9 @@ void AddXyzCommand(CLI::App& app)
     auto o = std::make_shared<XyzOptions>();
     CLI::App* cmd = app.add_subcommand(
         "xyz", "CIE XYZ, xy and L*a*b* of an illuminant, or of surfaces lit by it");
-    cmd->add_option("--illuminant", o->illuminant,
-                    "Built-in illuminant (A, D65, F11, D75, 3200K, ...) or a CSV/CGATS spectrum file")
+    cmd->add_option(
+           "--illuminant", o->illuminant,
+           "Built-in illuminant (A, D65, F11, D75, 3200K, ...) or a CSV/CGATS spectrum file")
         ->required();
     cmd->add_option("--reflectance", o->reflectance,
                     "Test colour (TCS01-TCS15, TCS for all) or a CSV/CGATS file of spectra");

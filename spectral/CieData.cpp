@@ -71,7 +71,8 @@ const MatchingFunctions& GetMatchingFunctions(Observer observer)
 
 const DaylightBasis& GetDaylightBasis()
 {
-    static const DaylightBasis basis = [] {
+    static const DaylightBasis basis = []
+    {
         std::vector<NamedSpectrum> s = ReadEmbedded("ref/daylight_basis.csv");
         return DaylightBasis{s.at(0).spectrum, s.at(1).spectrum, s.at(2).spectrum};
     }();
@@ -86,7 +87,8 @@ const std::vector<NamedSpectrum>& TestColourSamples()
 
 const std::vector<NamedSpectrum>& TabulatedIlluminants()
 {
-    static const std::vector<NamedSpectrum> all = [] {
+    static const std::vector<NamedSpectrum> all = []
+    {
         std::vector<NamedSpectrum> out;
         for (const char* name : {"A", "C", "D50", "D55", "D65", "E", "F1", "F2", "F3", "F4", "F5",
                                  "F6", "F7", "F8", "F9", "F10", "F11", "F12"})

@@ -15,6 +15,23 @@ Vec3 IntegrateXyz(const Spectrum& stimulus, Observer observer)
 {
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
     Vec3 xyz = Vec3::Zero();
+    const double offset = (stimulus.start() - cmf.x.start()) / cmf.x.step();
+    const bool aligned = std::abs(stimulus.step() - cmf.x.step()) < 1e-9 &&
+                         std::abs(offset - std::round(offset)) < 1e-9;
+    if (aligned)
+    {
+        // Same grid up to an offset: the tabulated values, no interpolation.
+        const long shift = std::lround(offset);
+        for (size_t i = 0; i < stimulus.size(); ++i)
+        {
+            const long j = long(i) + shift;
+            if (j >= 0 && size_t(j) < cmf.x.size())
+            {
+                xyz += stimulus[i] * Vec3(cmf.x[size_t(j)], cmf.y[size_t(j)], cmf.z[size_t(j)]);
+            }
+        }
+        return xyz * stimulus.step();
+    }
     for (size_t i = 0; i < stimulus.size(); ++i)
     {
         const double l = stimulus.wavelength(i);
@@ -48,7 +65,8 @@ Vec3 EqualEnergyNormalisedXyz(const Spectrum& stimulus, Observer observer)
 {
     // Divide by the equal-energy stimulus on the same grid, so that φ = 1
     // gives exactly (1, 1, 1) whatever range the data cover.
-    const Spectrum one = Spectrum::Constant(stimulus.start(), stimulus.step(), stimulus.size(), 1.0);
+    const Spectrum one =
+        Spectrum::Constant(stimulus.start(), stimulus.step(), stimulus.size(), 1.0);
     return IntegrateXyz(stimulus, observer).cwiseQuotient(IntegrateXyz(one, observer));
 }
 
@@ -67,17 +85,12 @@ XyzIntegrator::XyzIntegrator(const Spectrum& illuminant, Observer observer)
 
 Vec3 XyzIntegrator::integrate(const double* values) const noexcept
 {
-    const double* wx = m_wx.values().data();
-    const double* wy = m_wy.values().data();
-    const double* wz = m_wz.values().data();
-    double x = 0.0, y = 0.0, z = 0.0;
-    for (size_t i = 0, n = m_wx.size(); i < n; ++i)
-    {
-        x += wx[i] * values[i];
-        y += wy[i] * values[i];
-        z += wz[i] * values[i];
-    }
-    return Vec3(x, y, z);
+    // Eigen's dot products use packet (SIMD) partial sums.
+    using Map = Eigen::Map<const Eigen::VectorXd>;
+    const Eigen::Index n = Eigen::Index(m_wx.size());
+    const Map v(values, n);
+    return Vec3(Map(m_wx.values().data(), n).dot(v), Map(m_wy.values().data(), n).dot(v),
+                Map(m_wz.values().data(), n).dot(v));
 }
 
 Vec3 XyzIntegrator::operator()(const Spectrum& reflectance) const
@@ -155,7 +168,10 @@ Vec3 LabToXyz(const Vec3& lab, const Vec3& whiteXyz) noexcept
                 LabFInverse(fz) * whiteXyz.z());
 }
 
-double DeltaE76(const Vec3& lab1, const Vec3& lab2) noexcept { return (lab1 - lab2).norm(); }
+double DeltaE76(const Vec3& lab1, const Vec3& lab2) noexcept
+{
+    return (lab1 - lab2).norm();
+}
 
 double DeltaE2000(const Vec3& lab1, const Vec3& lab2, double kL, double kC, double kH) noexcept
 {
@@ -174,7 +190,8 @@ double DeltaE2000(const Vec3& lab1, const Vec3& lab2, double kL, double kC, doub
     const double C1p = std::hypot(a1p, b1);
     const double C2p = std::hypot(a2p, b2);
     // Hue angles in degrees in [0, 360); zero when the chroma is zero (eq. 7).
-    auto hue = [&](double b, double ap) {
+    auto hue = [&](double b, double ap)
+    {
         if (b == 0.0 && ap == 0.0)
         {
             return 0.0;
@@ -220,10 +237,9 @@ double DeltaE2000(const Vec3& lab1, const Vec3& lab2, double kL, double kC, doub
             hbarp = 0.5 * (h1p + h2p - 360.0);
         }
     }
-    const double T = 1.0 - 0.17 * std::cos((hbarp - 30.0) * deg) +
-                     0.24 * std::cos(2.0 * hbarp * deg) +
-                     0.32 * std::cos((3.0 * hbarp + 6.0) * deg) -
-                     0.20 * std::cos((4.0 * hbarp - 63.0) * deg);
+    const double T =
+        1.0 - 0.17 * std::cos((hbarp - 30.0) * deg) + 0.24 * std::cos(2.0 * hbarp * deg) +
+        0.32 * std::cos((3.0 * hbarp + 6.0) * deg) - 0.20 * std::cos((4.0 * hbarp - 63.0) * deg);
     const double dTheta = 30.0 * std::exp(-std::pow((hbarp - 275.0) / 25.0, 2.0));
     const double Cbarp7 = std::pow(Cbarp, 7.0);
     const double RC = 2.0 * std::sqrt(Cbarp7 / (Cbarp7 + std::pow(25.0, 7.0)));

@@ -33,7 +33,8 @@ constexpr double kMaxKelvin = 100000.0;
 /// computed once: the coarse stage of the search.
 const std::vector<Eigen::Vector2d>& LocusTable()
 {
-    static const std::vector<Eigen::Vector2d> table = [] {
+    static const std::vector<Eigen::Vector2d> table = []
+    {
         std::vector<Eigen::Vector2d> t;
         for (double mired = 1e6 / kMaxKelvin; mired <= 1e6 / kMinKelvin + 1e-9; mired += 1.0)
         {
@@ -122,10 +123,9 @@ ColourRendering ComputeColourRendering(const Spectrum& illuminant)
         throw Exception("colour rendering index: CCT " + std::to_string(cct.cctK) +
                         " K is outside 1000–25000 K, where CIE 13.3 defines a reference");
     }
-    const Spectrum reference =
-        cct.cctK < 5000.0
-            ? Planckian(cct.cctK, illuminant.start(), illuminant.step(), illuminant.size())
-            : Daylight(cct.cctK).resampledLike(illuminant);
+    const Spectrum reference = cct.cctK < 5000.0 ? Planckian(cct.cctK, illuminant.start(),
+                                                             illuminant.step(), illuminant.size())
+                                                 : Daylight(cct.cctK).resampledLike(illuminant);
 
     const XyzIntegrator test(illuminant, obs);
     const XyzIntegrator ref(reference, obs);

@@ -48,9 +48,8 @@ Eigen::Vector2d DaylightChromaticity(double cct)
     }
     const double t = 1.0 / cct;
     // CIE 15:2004 eq. 3.3 (two ranges meeting at 7000 K) and eq. 3.4.
-    const double x = cct <= 7000.0
-                         ? ((-4.6070e9 * t + 2.9678e6) * t + 0.09911e3) * t + 0.244063
-                         : ((-2.0064e9 * t + 1.9018e6) * t + 0.24748e3) * t + 0.237040;
+    const double x = cct <= 7000.0 ? ((-4.6070e9 * t + 2.9678e6) * t + 0.09911e3) * t + 0.244063
+                                   : ((-2.0064e9 * t + 1.9018e6) * t + 0.24748e3) * t + 0.237040;
     const double y = -3.000 * x * x + 2.870 * x - 0.275;
     return {x, y};
 }
@@ -71,7 +70,10 @@ Spectrum Daylight(double cct)
     return s;
 }
 
-double DaylightNominalCct(double hundreds) noexcept { return hundreds * 100.0 * 1.4388 / 1.4380; }
+double DaylightNominalCct(double hundreds) noexcept
+{
+    return hundreds * 100.0 * 1.4388 / 1.4380;
+}
 
 namespace
 {
@@ -110,9 +112,9 @@ const NamedSpectrum* FindTabulated(const std::string& upper)
 
 const std::vector<std::string>& StandardIlluminantNames()
 {
-    static const std::vector<std::string> names = {
-        "A",  "C",  "D50", "D55", "D65", "D75", "E",  "F1",  "F2",  "F3",
-        "F4", "F5", "F6",  "F7",  "F8",  "F9",  "F10", "F11", "F12"};
+    static const std::vector<std::string> names = {"A",  "C",  "D50", "D55", "D65", "D75", "E",
+                                                   "F1", "F2", "F3",  "F4",  "F5",  "F6",  "F7",
+                                                   "F8", "F9", "F10", "F11", "F12"};
     return names;
 }
 
@@ -129,7 +131,10 @@ bool IsBuiltinIlluminant(const std::string& name)
     }
 }
 
-std::string CanonicalIlluminantName(const std::string& name) { return Upper(name); }
+std::string CanonicalIlluminantName(const std::string& name)
+{
+    return Upper(name);
+}
 
 Spectrum BuiltinIlluminant(const std::string& name)
 {

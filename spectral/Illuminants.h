@@ -23,8 +23,7 @@ double PlanckRadiance(double lambdaNm, double kelvin) noexcept;
 /// Relative spectral power of a Planckian radiator at `kelvin`, 300–830 nm
 /// (or the given grid), normalised to 100 at 560 nm as CIE tables are.
 /// Throws Exception for temperatures outside (0, 1e6] K.
-Spectrum Planckian(double kelvin, double startNm = 300.0, double stepNm = 5.0,
-                   size_t count = 107);
+Spectrum Planckian(double kelvin, double startNm = 300.0, double stepNm = 5.0, size_t count = 107);
 
 /// Chromaticity (x, y) of CIE daylight at correlated colour temperature
 /// `cct` in 4000–25000 K (CIE 15:2004 eq. 3.3–3.4); throws outside.

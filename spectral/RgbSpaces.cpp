@@ -83,7 +83,10 @@ const RgbSpace& FindRgbSpace(const std::string& name)
     throw Exception("unknown working space '" + name + "' (choices: " + choices + ")");
 }
 
-Vec3 WhiteXyz(double x, double y) { return Vec3(x / y, 1.0, (1.0 - x - y) / y); }
+Vec3 WhiteXyz(double x, double y)
+{
+    return Vec3(x / y, 1.0, (1.0 - x - y) / y);
+}
 
 Mat3 RgbToXyzMatrix(const Chromaticities& c)
 {

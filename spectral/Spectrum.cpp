@@ -199,11 +199,26 @@ Spectrum& Spectrum::operator-=(const Spectrum& other)
     return *this;
 }
 
-Spectrum operator*(Spectrum a, double s) { return a *= s; }
-Spectrum operator*(double s, Spectrum a) { return a *= s; }
-Spectrum operator*(Spectrum a, const Spectrum& b) { return a *= b; }
-Spectrum operator+(Spectrum a, const Spectrum& b) { return a += b; }
-Spectrum operator-(Spectrum a, const Spectrum& b) { return a -= b; }
+Spectrum operator*(Spectrum a, double s)
+{
+    return a *= s;
+}
+Spectrum operator*(double s, Spectrum a)
+{
+    return a *= s;
+}
+Spectrum operator*(Spectrum a, const Spectrum& b)
+{
+    return a *= b;
+}
+Spectrum operator+(Spectrum a, const Spectrum& b)
+{
+    return a += b;
+}
+Spectrum operator-(Spectrum a, const Spectrum& b)
+{
+    return a -= b;
+}
 
 LineSpectrum::LineSpectrum(std::vector<SpectralLine> lines) : m_lines(std::move(lines))
 {
@@ -216,9 +231,8 @@ LineSpectrum::LineSpectrum(std::vector<SpectralLine> lines) : m_lines(std::move(
         }
     }
     std::sort(m_lines.begin(), m_lines.end(),
-              [](const SpectralLine& a, const SpectralLine& b) {
-                  return a.wavelengthNm < b.wavelengthNm;
-              });
+              [](const SpectralLine& a, const SpectralLine& b)
+              { return a.wavelengthNm < b.wavelengthNm; });
 }
 
 double LineSpectrum::integrate(const Spectrum& f) const noexcept

@@ -36,8 +36,7 @@ double ParseNumber(const std::string& token, const std::string& source, size_t l
     }
     if (!std::isfinite(v) || errno == ERANGE)
     {
-        Fail(source, line,
-             std::string("value out of range for ") + what + ": '" + token + "'");
+        Fail(source, line, std::string("value out of range for ") + what + ": '" + token + "'");
     }
     return v;
 }
@@ -305,9 +304,9 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
                      "BEGIN_DATA without END_DATA (truncated file?)");
             }
             ++i;
-            const bool spectral = std::any_of(fields.begin(), fields.end(), [](const Token& f) {
-                return f.text.rfind("SPEC_", 0) == 0;
-            });
+            const bool spectral =
+                std::any_of(fields.begin(), fields.end(),
+                            [](const Token& f) { return f.text.rfind("SPEC_", 0) == 0; });
             if (spectral)
             {
                 haveTable = true;
@@ -351,13 +350,15 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
             idColumn = c;
         }
     }
-    auto keywordNumber = [&](const char* key, double fallback) {
+    auto keywordNumber = [&](const char* key, double fallback)
+    {
         const auto it = keywords.find(key);
         return it == keywords.end() ? fallback
                                     : ParseNumber(it->second.text, source, it->second.line, key);
     };
     const size_t bands = specColumns.size();
-    double start = keywordNumber("SPECTRAL_START_NM", FieldWavelength(fields[specColumns.front()].text));
+    double start =
+        keywordNumber("SPECTRAL_START_NM", FieldWavelength(fields[specColumns.front()].text));
     double end = keywordNumber("SPECTRAL_END_NM", FieldWavelength(fields[specColumns.back()].text));
     const double declaredBands = keywordNumber("SPECTRAL_BANDS", double(bands));
     if (size_t(declaredBands) != bands)
@@ -402,11 +403,10 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
         for (size_t b = 0; b < bands; ++b)
         {
             const Token& tok = data[s * nf + specColumns[b]];
-            v[b] = ParseNumber(tok.text, source, tok.line, fields[specColumns[b]].text.c_str()) /
-                   norm;
+            v[b] =
+                ParseNumber(tok.text, source, tok.line, fields[specColumns[b]].text.c_str()) / norm;
         }
-        std::string name =
-            idColumn < nf ? data[s * nf + idColumn].text : std::to_string(s + 1);
+        std::string name = idColumn < nf ? data[s * nf + idColumn].text : std::to_string(s + 1);
         out.push_back({std::move(name), Spectrum(start, step, std::move(v))});
     }
     return out;

@@ -120,14 +120,12 @@ Eigen::MatrixXd MatchingBandMatrix(const BandSet& bands, MatchingSet set, Observ
     return m;
 }
 
-std::vector<double> RemittanceBands(const Spectrum& remittance, const BandSet& bands,
-                                    BandRule rule)
+std::vector<double> RemittanceBands(const Spectrum& remittance, const BandSet& bands, BandRule rule)
 {
     return BandMeans(remittance, bands, rule);
 }
 
-std::vector<double> IlluminantBands(const Spectrum& illuminant, const BandSet& bands,
-                                    BandRule rule)
+std::vector<double> IlluminantBands(const Spectrum& illuminant, const BandSet& bands, BandRule rule)
 {
     std::vector<double> means = BandMeans(illuminant, bands, rule);
     const double peak = *std::max_element(means.begin(), means.end());

@@ -45,8 +45,8 @@ BandSet::BandSet(std::vector<Band> bands) : m_bands(std::move(bands))
         const Band& b = m_bands[i];
         if (!std::isfinite(b.minNm) || !std::isfinite(b.maxNm) || !(b.maxNm > b.minNm))
         {
-            throw Exception("band set: band " + b.name + " [" + Num(b.minNm) + ", " +
-                            Num(b.maxNm) + ") nm is empty or not increasing");
+            throw Exception("band set: band " + b.name + " [" + Num(b.minNm) + ", " + Num(b.maxNm) +
+                            ") nm is empty or not increasing");
         }
         if (i > 0 && b.minNm < m_bands[i - 1].maxNm)
         {
@@ -57,7 +57,10 @@ BandSet::BandSet(std::vector<Band> bands) : m_bands(std::move(bands))
     }
 }
 
-BandSet BandSet::Lecture() { return FromEdges({400.0, 500.0, 600.0, 700.0}); }
+BandSet BandSet::Lecture()
+{
+    return FromEdges({400.0, 500.0, 600.0, 700.0});
+}
 
 BandSet BandSet::Equal(size_t n, double minNm, double maxNm)
 {

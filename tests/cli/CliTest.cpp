@@ -180,9 +180,9 @@ TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli
     {
         const std::string out = TempPath(std::string("tcs_") + illuminant + ".ti3");
         std::remove(out.c_str());
-        const Result argyll = Run(std::string("-n -i ") + illuminant + " -o 1931_2 '" + ti3 +
-                                      "' '" + out + "'",
-                                  SPEC2CIE_EXE);
+        const Result argyll =
+            Run(std::string("-n -i ") + illuminant + " -o 1931_2 '" + ti3 + "' '" + out + "'",
+                SPEC2CIE_EXE);
         REQUIRE(argyll.code == 0);
         // Pull SAMPLE_ID and XYZ_X/Y/Z out of spec2cie's CGATS output.
         std::ifstream in(out);
@@ -219,14 +219,13 @@ TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli
                 rows.push_back(tok);
             }
         }
-        auto column = [&](const std::string& name) {
-            return size_t(std::find(fields.begin(), fields.end(), name) - fields.begin());
-        };
+        auto column = [&](const std::string& name)
+        { return size_t(std::find(fields.begin(), fields.end(), name) - fields.begin()); };
         REQUIRE(rows.size() == 14);
         REQUIRE(column("XYZ_X") < fields.size());
 
-        const Result ours = Run(std::string("xyz --illuminant ") + illuminant +
-                                " --reflectance '" + ti3 + "' --json");
+        const Result ours = Run(std::string("xyz --illuminant ") + illuminant + " --reflectance '" +
+                                ti3 + "' --json");
         REQUIRE(ours.code == 0);
         const nlohmann::json j = nlohmann::json::parse(ours.out);
         REQUIRE(j["samples"].size() == 14);
@@ -244,6 +243,13 @@ TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli
             worstXyz = std::max(worstXyz, (a - b).cwiseAbs().maxCoeff());
             worstDe = std::max(worstDe, DeltaE2000(XyzToLab(a, white), XyzToLab(b, white)));
         }
+        // spec2cie resamples spectra and tables onto its own finer grid before
+        // summing; bandlight sums the 5 nm tables as CIE 15:2004 §7.1 does. The
+        // two agree within 0.05 in XYZ (white Y = 100) and 0.075 ΔE00 (measured:
+        // D65 0.044 / 0.049, A 0.017 / 0.036).
+        INFO(illuminant << ": worst |ΔXYZ| " << worstXyz << ", worst ΔE00 " << worstDe);
+        CHECK(worstXyz < 0.05);
+        CHECK(worstDe < 0.075);
     }
 }
 #endif

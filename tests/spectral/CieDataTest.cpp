@@ -12,7 +12,10 @@ using namespace bandlight;
 
 namespace
 {
-bool Exists(const std::string& path) { return bool(std::ifstream(path)); }
+bool Exists(const std::string& path)
+{
+    return bool(std::ifstream(path));
+}
 
 /// Every sample of `embedded` equals the package's value at that wavelength.
 void CheckSameSamples(const Spectrum& embedded, const Spectrum& package)
@@ -47,8 +50,9 @@ TEST_CASE("Embedded CIE tables equal colord-data's files", "[spectral][data]")
     for (const NamedSpectrum& ill : TabulatedIlluminants())
     {
         INFO("illuminant " << ill.name);
-        CheckSameSamples(ill.spectrum,
-                         ReadSpectraFile(root + "/illuminant/CIE-" + ill.name + ".sp").at(0).spectrum);
+        CheckSameSamples(
+            ill.spectrum,
+            ReadSpectraFile(root + "/illuminant/CIE-" + ill.name + ".sp").at(0).spectrum);
     }
     const auto tcs = ReadSpectraFile(root + "/ref/CIE-TCS.sp");
     REQUIRE(tcs.size() == TestColourSamples().size());
@@ -86,13 +90,13 @@ TEST_CASE("White points of A, D50 and D65 match CIE 15:2004", "[spectral][publis
         const char* name;
         double x, y;
     };
-    for (const Case c : {Case{"A", 0.44758, 0.40745}, Case{"D50", 0.34567, 0.35851},
-                         Case{"D65", 0.31272, 0.32903}, Case{"C", 0.31006, 0.31616},
-                         Case{"D55", 0.33243, 0.34744}})
+    for (const Case c :
+         {Case{"A", 0.44758, 0.40745}, Case{"D50", 0.34567, 0.35851}, Case{"D65", 0.31272, 0.32903},
+          Case{"C", 0.31006, 0.31616}, Case{"D55", 0.33243, 0.34744}})
     {
         INFO(c.name);
-        const Vec3 xyY = XyzToxyY(IlluminantWhiteXyz(BuiltinIlluminant(c.name),
-                                                     Observer::CIE1931_2DEG));
+        const Vec3 xyY =
+            XyzToxyY(IlluminantWhiteXyz(BuiltinIlluminant(c.name), Observer::CIE1931_2DEG));
         CHECK(xyY.x() == Approx(c.x).margin(6e-5));
         CHECK(xyY.y() == Approx(c.y).margin(6e-5));
     }

@@ -110,8 +110,7 @@ TEST_CASE("CIE daylight reconstructs the tabulated D65, D50 and D55", "[spectral
 TEST_CASE("D75 and other D-illuminants come from the daylight basis", "[spectral]")
 {
     // CIE 15:2004 Table T.3: D75 (0.29903, 0.31488).
-    const Vec3 xyY =
-        XyzToxyY(IlluminantWhiteXyz(BuiltinIlluminant("d75"), Observer::CIE1931_2DEG));
+    const Vec3 xyY = XyzToxyY(IlluminantWhiteXyz(BuiltinIlluminant("d75"), Observer::CIE1931_2DEG));
     CHECK(xyY.x() == Approx(0.29903).margin(1e-4));
     CHECK(xyY.y() == Approx(0.31488).margin(1e-4));
     CHECK_THROWS_WITH(DaylightChromaticity(3000.0), Contains("4000–25000 K"));

@@ -119,8 +119,9 @@ END_DATA
 
 TEST_CASE("CGATS errors name the file, the line and the value", "[spectral][io]")
 {
-    const std::string head = "SPECT\nSPECTRAL_START_NM 400\nSPECTRAL_END_NM 410\nSPECTRAL_BANDS 2\n"
-                             "BEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\n";
+    const std::string head =
+        "SPECT\nSPECTRAL_START_NM 400\nSPECTRAL_END_NM 410\nSPECTRAL_BANDS 2\n"
+        "BEGIN_DATA_FORMAT\nSPEC_400 SPEC_410\nEND_DATA_FORMAT\n";
     CHECK_THROWS_WITH(Cgats(head + "BEGIN_DATA\n0.1 x\nEND_DATA\n"),
                       "test.sp:9: expected a number for SPEC_410, got 'x'");
     CHECK_THROWS_WITH(Cgats(head + "BEGIN_DATA\n0.1 0.2\n0.3\nEND_DATA\n"),

@@ -87,8 +87,8 @@ TEST_CASE("Line spectra integrate exactly at any grid, never smeared or lost", "
     // Mercury lines as in fluorescent lamps, and a 632.8 nm He-Ne laser.
     const LineSpectrum lines({{404.66, 1.0}, {435.83, 2.0}, {546.07, 3.0}, {632.8, 0.5}});
     const MatchingFunctions& cmf = GetMatchingFunctions(Observer::CIE1931_2DEG);
-    const double exactY = 1.0 * cmf.y(404.66) + 2.0 * cmf.y(435.83) + 3.0 * cmf.y(546.07) +
-                          0.5 * cmf.y(632.8);
+    const double exactY =
+        1.0 * cmf.y(404.66) + 2.0 * cmf.y(435.83) + 3.0 * cmf.y(546.07) + 0.5 * cmf.y(632.8);
     CHECK(IntegrateXyz(lines, Observer::CIE1931_2DEG).y() == Approx(exactY).epsilon(1e-12));
 
     for (double step : {1.0, 2.0, 5.0, 10.0})

@@ -44,7 +44,8 @@ TEST_CASE("Illuminant band means reproduce the lecture's table", "[transforms][l
                            Row{"F11", 0.7060, 1.0000, 0.8008}})
     {
         INFO(row.name);
-        const std::vector<double> v = IlluminantBands(BuiltinIlluminant(row.name), BandSet::Lecture());
+        const std::vector<double> v =
+            IlluminantBands(BuiltinIlluminant(row.name), BandSet::Lecture());
         CHECK(v[0] == Approx(row.b).margin(std::string(row.name) == "A" ? 0.005 : 0.001));
         CHECK(v[1] == Approx(row.g).margin(0.001));
         CHECK(v[2] == Approx(row.r).margin(0.001));
@@ -127,17 +128,17 @@ TEST_CASE("Band model errors are clear", "[transforms]")
                       Contains("outside the 380–"));
     CHECK_THROWS_WITH(BandMeans(BuiltinIlluminant("F2"), BandSet::Parse("402,404,700")),
                       Contains("band B1 holds no sample"));
-    CHECK_THROWS_WITH(BandToColourMatrix(BandSet::Equal(4, 400, 700), MatchingSet::XYZ,
-                                         Observer::CIE1931_2DEG),
-                      Contains("needs three bands, got 4"));
+    CHECK_THROWS_WITH(
+        BandToColourMatrix(BandSet::Equal(4, 400, 700), MatchingSet::XYZ, Observer::CIE1931_2DEG),
+        Contains("needs three bands, got 4"));
     CHECK(ParseBandRule("EXACT") == BandRule::EXACT);
     CHECK_THROWS_AS(ParseBandRule("midpoint"), Exception);
 }
 
 TEST_CASE("Narrow bands make the band matrix ill-conditioned", "[transforms]")
 {
-    const BandMatrix3 good = BandToColourMatrix(BandSet::Lecture(), MatchingSet::XYZ,
-                                                Observer::CIE1931_2DEG);
+    const BandMatrix3 good =
+        BandToColourMatrix(BandSet::Lecture(), MatchingSet::XYZ, Observer::CIE1931_2DEG);
     // Below 440 nm x̄, ȳ and z̄ are nearly proportional: the columns of the band
     // matrix become nearly dependent (condition ≈ 1.6e4 against ≈ 4.3).
     const BandMatrix3 violet = BandToColourMatrix(BandSet::Parse("380,400,420,440"),
