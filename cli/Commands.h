@@ -10,5 +10,6 @@ namespace bandlight::cli
 void AddTablesCommand(CLI::App& app);
 void AddXyzCommand(CLI::App& app);
 void AddCriCommand(CLI::App& app);
+void AddConfigCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

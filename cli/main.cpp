@@ -17,6 +17,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddTablesCommand(app);
     bandlight::cli::AddXyzCommand(app);
     bandlight::cli::AddCriCommand(app);
+    bandlight::cli::AddConfigCommand(app);
     try
     {
         app.parse(argc, argv);

@@ -1,0 +1,388 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "plugin/ConfigBuilder.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+#include <set>
+
+#include <Eigen/LU>
+
+#include "spectral/AtomicFile.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
+
+namespace bandlight
+{
+
+namespace
+{
+
+constexpr const char* kBandSpaceName = "Bands VB-VG-VR (lecture)";
+constexpr const char* kFamilyLooks = "bandlight";
+
+/// Matrix from linear RGB space `src` to `dst`, adapting the white with
+/// Bradford when the two whites differ (as the ACES and Blender configs do).
+Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst)
+{
+    const Mat3 ms = RgbToXyzMatrix(src.chromaticities);
+    const Mat3 md = RgbToXyzMatrix(dst.chromaticities);
+    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
+    const Vec3 wd = WhiteXyz(dst.chromaticities.wx, dst.chromaticities.wy);
+    const Mat3 cat = (ws - wd).norm() < 1e-9 ? Mat3::Identity()
+                                             : AdaptationMatrix(ws, wd, AdaptationMethod::BRADFORD);
+    return md.inverse() * cat * ms;
+}
+
+/// Linear RGB → CIE XYZ with a D65 white (Bradford when the space's white differs).
+Mat3 SpaceToXyzD65(const RgbSpace& src)
+{
+    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
+    const Vec3 d65 = WhiteXyz(0.3127, 0.3290);
+    const Mat3 cat = (ws - d65).norm() < 1e-9 ? Mat3::Identity()
+                                              : AdaptationMatrix(ws, d65, AdaptationMethod::BRADFORD);
+    return cat * RgbToXyzMatrix(src.chromaticities);
+}
+
+OCIO::ColorSpaceRcPtr SceneSpace(const std::string& name, const std::string& family,
+                                 const std::string& description, const std::string& encoding)
+{
+    OCIO::ColorSpaceRcPtr cs = OCIO::ColorSpace::Create(OCIO::REFERENCE_SPACE_SCENE);
+    cs->setName(name.c_str());
+    cs->setFamily(family.c_str());
+    cs->setDescription(description.c_str());
+    cs->setEncoding(encoding.c_str());
+    return cs;
+}
+
+/// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded → linear.
+OCIO::TransformRcPtr SrgbDecode()
+{
+    OCIO::ExponentWithLinearTransformRcPtr t = OCIO::ExponentWithLinearTransform::Create();
+    const double gamma[4] = {2.4, 2.4, 2.4, 1.0};
+    const double offset[4] = {0.055, 0.055, 0.055, 0.0};
+    t->setGamma(gamma);
+    t->setOffset(offset);
+    return t;
+}
+
+/// A transform taking the base config's scene_linear space to its reference,
+/// so that spaces added relative to scene_linear need no knowledge of the
+/// base's reference.
+OCIO::TransformRcPtr SceneLinearToReference(const OCIO::ConstColorSpaceRcPtr& sceneLinear)
+{
+    if (OCIO::ConstTransformRcPtr t =
+            sceneLinear->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE))
+    {
+        return t->createEditableCopy();
+    }
+    if (OCIO::ConstTransformRcPtr t =
+            sceneLinear->getTransform(OCIO::COLORSPACE_DIR_FROM_REFERENCE))
+    {
+        OCIO::TransformRcPtr inv = t->createEditableCopy();
+        inv->setDirection(inv->getDirection() == OCIO::TRANSFORM_DIR_FORWARD
+                              ? OCIO::TRANSFORM_DIR_INVERSE
+                              : OCIO::TRANSFORM_DIR_FORWARD);
+        return inv;
+    }
+    return nullptr;  // scene_linear is the reference itself
+}
+
+void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observer,
+                  OCIO::TransformRcPtr workingToReference)
+{
+    const BandSet bands = BandSet::Lecture();
+    OCIO::ColorSpaceRcPtr cs = SceneSpace(
+        kBandSpaceName, "Bands",
+        "Radiometric band values of the lecture's 3-band model (VB 400-500, VG 500-600, VR "
+        "600-700 nm) as R, G, B channels: band means normalised so that an equal-energy light on "
+        "a white surface is (1, 1, 1).",
+        "scene-linear");
+    const Mat3 bandToWorking = BandToWorkingMatrix(bands, working, observer);
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    g->appendTransform(MakeMatrixTransform(bandToWorking));
+    if (workingToReference)
+    {
+        g->appendTransform(workingToReference);
+    }
+    cs->setTransform(g, OCIO::COLORSPACE_DIR_TO_REFERENCE);
+    config.addColorSpace(cs);
+}
+
+void AddLooks(OCIO::Config& config, const ConfigOptions& o, const RgbSpace& working,
+              const std::string& processSpace)
+{
+    std::vector<MethodSpec> methods;
+    for (const std::string& m : o.methods)
+    {
+        methods.push_back(ParseMethod(m));
+    }
+    std::set<std::string> seen;
+    for (const MethodSpec& method : methods)
+    {
+        for (const Light& from : o.lights)
+        {
+            for (const Light& to : o.lights)
+            {
+                if (from.name == to.name)
+                {
+                    continue;
+                }
+                const std::string name = LookName(method.name, from.name, to.name);
+                if (!seen.insert(name).second)
+                {
+                    throw Exception("look name '" + name +
+                                    "' would be made twice: two illuminants share a name");
+                }
+                if (config.getLook(name.c_str()) ||
+                    config.getNamedTransform(NamedTransformName(name).c_str()) ||
+                    config.getColorSpace(name.c_str()) ||
+                    config.getColorSpace(NamedTransformName(name).c_str()))
+                {
+                    throw Exception("look name '" + name +
+                                    "' clashes with a look, named transform or colour space the "
+                                    "config already has");
+                }
+                const Mat3 m = IlluminantChangeMatrix(from, to, method, working, o.observer);
+                const std::string description = "Relight from " + from.name + " to " + to.name +
+                                                " in " + working.displayName + ". " +
+                                                DescribeMethod(method);
+                OCIO::LookRcPtr look = OCIO::Look::Create();
+                look->setName(name.c_str());
+                look->setProcessSpace(processSpace.c_str());
+                look->setTransform(MakeMatrixTransform(m));
+                look->setDescription(description.c_str());
+                config.addLook(look);
+
+                // The same as a named transform (OCIO keeps look and named-transform
+                // names apart, hence the prefix); it applies to the image as it is,
+                // so it states which space it expects.
+                OCIO::NamedTransformRcPtr nt = OCIO::NamedTransform::Create();
+                nt->setName(NamedTransformName(name).c_str());
+                nt->setFamily((std::string(kFamilyLooks) + "/" + method.name).c_str());
+                nt->setDescription(
+                    (description + " Expects " + working.displayName + " input.").c_str());
+                nt->setTransform(MakeMatrixTransform(m), OCIO::TRANSFORM_DIR_FORWARD);
+                config.addNamedTransform(nt);
+            }
+        }
+    }
+}
+
+void RequireLights(const ConfigOptions& o)
+{
+    if (o.lights.size() < 2)
+    {
+        throw Exception("a config needs at least two illuminants to change between");
+    }
+    if (o.methods.empty())
+    {
+        throw Exception("a config needs at least one method");
+    }
+    for (const std::string& m : o.methods)
+    {
+        ParseMethod(m);
+    }
+}
+
+}  // namespace
+
+std::string NamedTransformName(const std::string& lookName) { return "relight_" + lookName; }
+
+std::string ColorSpaceName(const RgbSpace& space)
+{
+    if (space.name == "acescg")
+    {
+        return "ACEScg";
+    }
+    if (space.name == "aces2065-1")
+    {
+        return "ACES2065-1";
+    }
+    return space.displayName;
+}
+
+std::vector<Light> LectureLights()
+{
+    std::vector<Light> lights;
+    for (const char* n : {"A", "C", "D65", "F2", "F11"})
+    {
+        lights.push_back({n, BuiltinIlluminant(n)});
+    }
+    return lights;
+}
+
+OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& o)
+{
+    RequireLights(o);
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    const std::string workingName = ColorSpaceName(working);
+
+    OCIO::ConfigRcPtr config = OCIO::Config::Create();
+    config->setVersion(2, 0);
+    config->setName(("bandlight " + working.name).c_str());
+    config->setDescription(
+        ("bandlight: illuminant-change looks (the lecture's 3-band model and chromatic "
+         "adaptations) for " +
+         working.displayName +
+         " scene-linear images. Look names: <method>_<FROM>_to_<TO>. Generated by "
+         "`bandlight config`.")
+            .c_str());
+
+    // The working space is the reference: every other space is defined to it.
+    OCIO::ColorSpaceRcPtr ref =
+        SceneSpace(workingName, "Scene-linear", working.description, "scene-linear");
+    config->addColorSpace(ref);
+    for (const RgbSpace& s : BuiltinRgbSpaces())
+    {
+        if (s.name == working.name)
+        {
+            continue;
+        }
+        OCIO::ColorSpaceRcPtr cs =
+            SceneSpace(ColorSpaceName(s), "Scene-linear", s.description, "scene-linear");
+        cs->setTransform(MakeMatrixTransform(SpaceToSpace(s, working)),
+                         OCIO::COLORSPACE_DIR_TO_REFERENCE);
+        config->addColorSpace(cs);
+    }
+    const RgbSpace& rec709 = FindRgbSpace("rec709");
+    OCIO::ColorSpaceRcPtr xyz = SceneSpace("CIE-XYZ-D65", "Scene-linear",
+                                           "CIE 1931 XYZ with a D65 white (Y = 1 for white)",
+                                           "scene-linear");
+    xyz->setTransform(MakeMatrixTransform(SpaceToXyzD65(working).inverse()),
+                      OCIO::COLORSPACE_DIR_TO_REFERENCE);
+    config->addColorSpace(xyz);
+
+    OCIO::ColorSpaceRcPtr srgb =
+        SceneSpace("sRGB", "Display", "sRGB (IEC 61966-2-1) encoded Rec.709, for 8-bit images",
+                   "sdr-video");
+    OCIO::GroupTransformRcPtr srgbToRef = OCIO::GroupTransform::Create();
+    srgbToRef->appendTransform(SrgbDecode());
+    srgbToRef->appendTransform(MakeMatrixTransform(SpaceToSpace(rec709, working)));
+    srgb->setTransform(srgbToRef, OCIO::COLORSPACE_DIR_TO_REFERENCE);
+    config->addColorSpace(srgb);
+
+    OCIO::ColorSpaceRcPtr data =
+        SceneSpace("Non-Color", "Data", "Data, not colour: normals, masks; never converted", "data");
+    data->setIsData(true);
+    config->addColorSpace(data);
+
+    AddBandSpace(*config, working, o.observer, nullptr);
+
+    // clang-format off
+    const std::pair<const char*, std::string> roles[] = {
+        {OCIO::ROLE_REFERENCE, workingName},
+        {OCIO::ROLE_SCENE_LINEAR, workingName},
+        {OCIO::ROLE_RENDERING, workingName},
+        {OCIO::ROLE_COLOR_TIMING, workingName},
+        {OCIO::ROLE_DEFAULT, workingName},
+        {OCIO::ROLE_DATA, "Non-Color"},
+        {OCIO::ROLE_COLOR_PICKING, "sRGB"},
+        {OCIO::ROLE_TEXTURE_PAINT, "sRGB"},
+        {OCIO::ROLE_MATTE_PAINT, "sRGB"},
+        {OCIO::ROLE_INTERCHANGE_SCENE, "ACES2065-1"},
+        {OCIO::ROLE_INTERCHANGE_DISPLAY, "CIE-XYZ-D65"},
+        {"default_byte", "sRGB"},
+        {"default_float", workingName},
+        {"default_sequencer", "sRGB"},
+        {"compositing_linear", workingName},
+    };
+    // clang-format on
+    for (const auto& [role, space] : roles)
+    {
+        if (space != "ACES2065-1" || config->getColorSpace("ACES2065-1"))
+        {
+            config->setRole(role, space.c_str());
+        }
+    }
+    config->addDisplayView("sRGB", "Standard", "sRGB", "");
+    config->addDisplayView("sRGB", "Raw", "Non-Color", "");
+    config->setActiveDisplays("sRGB");
+    config->setActiveViews("Standard, Raw");
+
+    AddLooks(*config, o, working, workingName);
+    config->validate();
+    return config;
+}
+
+OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, bool detect,
+                               std::string* identifiedSpace)
+{
+    RequireLights(o);
+    OCIO::ConstColorSpaceRcPtr sceneLinear = base->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
+    if (!sceneLinear)
+    {
+        throw Exception("the base config has no scene_linear role: looks need a process space");
+    }
+    const std::string processSpace = sceneLinear->getName();
+    if (detect)
+    {
+        // Measure scene_linear against an interchange space and find which
+        // built-in primaries (with the usual white adaptations) it matches.
+        const char* interchange = base->getColorSpace(OCIO::ROLE_INTERCHANGE_DISPLAY)
+                                      ? OCIO::ROLE_INTERCHANGE_DISPLAY
+                                  : base->getColorSpace(OCIO::ROLE_INTERCHANGE_SCENE)
+                                      ? OCIO::ROLE_INTERCHANGE_SCENE
+                                      : nullptr;
+        if (!interchange)
+        {
+            throw Exception("cannot tell the primaries of the base config's scene_linear space '" +
+                            processSpace +
+                            "' (no cie_xyz_d65_interchange or aces_interchange role): give "
+                            "--working-space");
+        }
+        const Mat3 measured =
+            MeasureMatrix(base->getProcessor(OCIO::ROLE_SCENE_LINEAR, interchange));
+        const bool toXyz = std::string(interchange) == OCIO::ROLE_INTERCHANGE_DISPLAY;
+        const RgbSpace* found = nullptr;
+        for (const RgbSpace& s : BuiltinRgbSpaces())
+        {
+            const Mat3 expected =
+                toXyz ? SpaceToXyzD65(s) : SpaceToSpace(s, FindRgbSpace("aces2065-1"));
+            // Configs adapt whites with Bradford or CAT02 and round their
+            // matrices: 2e-3 tells the primaries sets apart with a wide margin.
+            if ((measured - expected).cwiseAbs().maxCoeff() < 2e-3)
+            {
+                found = &s;
+                break;
+            }
+        }
+        if (!found)
+        {
+            throw Exception("the base config's scene_linear space '" + processSpace +
+                            "' matches none of the built-in primaries: give --working-space");
+        }
+        o.workingSpace = found->name;
+    }
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    if (identifiedSpace)
+    {
+        *identifiedSpace = working.name;
+    }
+
+    OCIO::ConfigRcPtr config = base->createEditableCopy();
+    if (config->getColorSpace(kBandSpaceName))
+    {
+        throw Exception(std::string("the base config already has a colour space named '") +
+                        kBandSpaceName + "'");
+    }
+    AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));
+    AddLooks(*config, o, working, processSpace);
+    config->validate();
+    return config;
+}
+
+void WriteConfigPackage(const OCIO::ConstConfigRcPtr& config, const std::string& dir)
+{
+    if (::mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
+    {
+        throw Exception(dir + ": cannot create the config directory (" + std::strerror(errno) +
+                        ")");
+    }
+    WriteFileAtomically(dir + "/config.ocio", [&](std::ostream& os) { config->serialize(os); });
+}
+
+}  // namespace bandlight

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "plugin/OcioTransforms.h"
+
+#include <Eigen/LU>
+
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+
+OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m)
+{
+    // clang-format off
+    const double m44[16] = {m(0, 0), m(0, 1), m(0, 2), 0.0,
+                            m(1, 0), m(1, 1), m(1, 2), 0.0,
+                            m(2, 0), m(2, 1), m(2, 2), 0.0,
+                            0.0,     0.0,     0.0,     1.0};
+    // clang-format on
+    OCIO::MatrixTransformRcPtr t = OCIO::MatrixTransform::Create();
+    t->setMatrix(m44);
+    return t;
+}
+
+namespace
+{
+OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name, const std::string& description)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    OCIO::FormatMetadata& md = g->getFormatMetadata();
+    md.setName(name.c_str());
+    md.setID(name.c_str());
+    md.addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
+    g->appendTransform(MakeMatrixTransform(m));
+    return g;
+}
+}  // namespace
+
+OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
+                                                    const MethodSpec& method,
+                                                    const RgbSpace& working, Observer observer)
+{
+    const Mat3 m = IlluminantChangeMatrix(from, to, method, working, observer);
+    return Group(m, LookName(method.name, from.name, to.name),
+                 "Relight from " + from.name + " to " + to.name + " in " + working.displayName +
+                     ". " + DescribeMethod(method));
+}
+
+OCIO::GroupTransformRcPtr BandSpaceTransform(const BandSet& bands, const RgbSpace& working,
+                                             Observer observer)
+{
+    if (bands.size() != 3)
+    {
+        throw Exception("a band colour space needs three bands, got " +
+                        std::to_string(bands.size()));
+    }
+    const Mat3 m = WorkingToBandMatrix(bands, working, observer);
+    return Group(m, "bands_" + SafeName(bands.describe()),
+                 "Working RGB to radiometric band values over " + bands.describe() + " nm");
+}
+
+OCIO::GroupTransformRcPtr MaterialTintTransform(const std::vector<double>& remittance,
+                                                const BandSet& bands, const RgbSpace& working,
+                                                Observer observer)
+{
+    const Mat3 m = MaterialTintMatrix(remittance, bands, working, observer);
+    return Group(m, "material_tint", "Band-space remittance (R_diff) over " + bands.describe() +
+                                         " nm, in " + working.displayName);
+}
+
+Mat3 MeasureMatrix(const OCIO::ConstProcessorRcPtr& processor)
+{
+    const OCIO::ConstCPUProcessorRcPtr cpu =
+        processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                            OCIO::OPTIMIZATION_NONE);
+    Mat3 out;
+    for (int c = 0; c < 3; ++c)
+    {
+        float rgb[3] = {0.0f, 0.0f, 0.0f};
+        rgb[c] = 1.0f;
+        cpu->applyRGB(rgb);
+        for (int r = 0; r < 3; ++r)
+        {
+            out(r, c) = rgb[r];
+        }
+    }
+    return out;
+}
+
+std::string SafeName(const std::string& text)
+{
+    std::string s = text;
+    for (char& c : s)
+    {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                        c == '.' || c == '_' || c == '-';
+        if (!ok)
+        {
+            c = '_';
+        }
+    }
+    return s;
+}
+
+std::string LookName(const std::string& method, const std::string& from, const std::string& to)
+{
+    return SafeName(method) + "_" + SafeName(from) + "_to_" + SafeName(to);
+}
+
+}  // namespace bandlight

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include "spectral/Colorimetry.h"
+#include "transforms/IlluminantChange.h"
+
+namespace bandlight
+{
+namespace OCIO = OCIO_NAMESPACE;
+
+/// A MatrixTransform holding a 3×3 (as OCIO's 4×4 with no offset).
+OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m);
+
+/// The illuminant change from `from` to `to` by `method`, for images in the
+/// linear RGB space `working`: a group holding one MatrixTransform (every
+/// linear method is one 3×3), with the method's description as metadata.
+OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
+                                                    const MethodSpec& method,
+                                                    const RgbSpace& working,
+                                                    Observer observer = Observer::CIE1931_2DEG);
+
+/// Working RGB → the band space of a three-band set (radiometric band
+/// values, VB/VG/VR for the lecture's bands). Throws Exception for other
+/// than three bands (an N-band space has N channels, which OCIO images have not).
+OCIO::GroupTransformRcPtr BandSpaceTransform(const BandSet& bands, const RgbSpace& working,
+                                             Observer observer = Observer::CIE1931_2DEG);
+
+/// The lecture's material tint (R_diff as a diagonal in band space), in the
+/// working space.
+OCIO::GroupTransformRcPtr MaterialTintTransform(const std::vector<double>& remittance,
+                                                const BandSet& bands, const RgbSpace& working,
+                                                Observer observer = Observer::CIE1931_2DEG);
+
+/// The 3×3 an OCIO processor applies, measured by running the basis vectors
+/// through it (used to check configs against the library's matrices).
+Mat3 MeasureMatrix(const OCIO::ConstProcessorRcPtr& processor);
+
+/// "band3-wp_A_to_D65": a look / named-transform name without characters
+/// that hosts' option syntax reserves (anything but letters, digits, '.',
+/// '_' and '-' becomes '_').
+std::string LookName(const std::string& method, const std::string& from, const std::string& to);
+
+/// A name made safe for OCIO and for hosts' option syntax (see LookName).
+std::string SafeName(const std::string& text);
+
+}  // namespace bandlight

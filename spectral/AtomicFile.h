@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <fstream>
+#include <functional>
+#include <string>
+
+namespace bandlight
+{
+
+/// An output file that appears whole or not at all: it is written to a
+/// temporary file in the destination directory and renamed over the
+/// destination by commit(). Destroyed without commit(), it removes the
+/// temporary file and the previous output stays as it was.
+class AtomicFile
+{
+public:
+    /// Throws Exception when the temporary file cannot be created.
+    explicit AtomicFile(std::string path);
+    ~AtomicFile();
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    /// The temporary path, for writers that want a file name (OIIO); keeps
+    /// the destination's extension so format detection still works.
+    const std::string& tempPath() const noexcept { return m_temp; }
+    /// A stream on the temporary file.
+    std::ofstream& stream() noexcept { return m_stream; }
+
+    /// Flushes and renames the temporary file over the destination; throws
+    /// Exception naming the file on any write or rename failure.
+    void commit();
+
+private:
+    std::string m_path;
+    std::string m_temp;
+    std::ofstream m_stream;
+    bool m_committed = false;
+};
+
+/// Writes a file through AtomicFile with a callback that fills the stream.
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
+
+}  // namespace bandlight
