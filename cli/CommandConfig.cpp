@@ -74,8 +74,8 @@ void RunConfig(const ConfigCommandOptions& o)
     }
     WriteConfigPackage(config, o.out);
     std::cout << "Wrote " << o.out << "/config.ocio: " << config->getNumLooks() << " looks and "
-              << config->getNumNamedTransforms() << " named transforms for " << identified
-              << " (" << options.lights.size() << " illuminants, " << options.methods.size()
+              << config->getNumNamedTransforms() << " named transforms for " << identified << " ("
+              << options.lights.size() << " illuminants, " << options.methods.size()
               << " methods)\n";
 }
 
@@ -97,9 +97,10 @@ void AddConfigCommand(CLI::App& app)
     cmd->add_option("--illuminants", o->illuminants,
                     "Comma-separated built-in illuminants or spectrum files")
         ->capture_default_str();
-    cmd->add_option("--methods", o->methods,
-                    "Comma-separated methods (default: none,vonkries,bradford,cat02,band3,band3-wp; "
-                    "also bandN, bandN-wp)");
+    cmd->add_option(
+        "--methods", o->methods,
+        "Comma-separated methods (default: none,vonkries,bradford,cat02,band3,band3-wp; "
+        "also bandN, bandN-wp)");
     AddObserverOption(*cmd, o->observer);
     cmd->callback([o] { RunConfig(*o); });
 }

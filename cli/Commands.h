@@ -11,5 +11,7 @@ void AddTablesCommand(CLI::App& app);
 void AddXyzCommand(CLI::App& app);
 void AddCriCommand(CLI::App& app);
 void AddConfigCommand(CLI::App& app);
+void AddLutCommand(CLI::App& app);
+void AddApplyCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

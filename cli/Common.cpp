@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "plugin/OcioTransforms.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 
@@ -68,6 +69,40 @@ CLI::Option* AddObserverOption(CLI::App& app, std::string& value)
     value = "1931";
     return app.add_option("--observer", value, "CIE standard observer: 1931 (2°) or 1964 (10°)")
         ->capture_default_str();
+}
+
+void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
+{
+    CLI::Option* from =
+        app.add_option("--from", o.from, "Illuminant the image is lit by (name or spectrum file)");
+    CLI::Option* to =
+        app.add_option("--to", o.to, "Illuminant it should look lit by (name or spectrum file)");
+    app.add_option("--method", o.method,
+                   "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp")
+        ->capture_default_str();
+    app.add_option("--working-space", o.workingSpace,
+                   "Linear working space of the image: acescg, aces2065-1, lin-rec709, rec2020, "
+                   "p3-d65, ebu3213")
+        ->capture_default_str();
+    if (required)
+    {
+        from->required();
+        to->required();
+    }
+}
+
+OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bool* isMatrix)
+{
+    const NamedSpectrum from = ResolveIlluminant(o.from);
+    const NamedSpectrum to = ResolveIlluminant(o.to);
+    const MethodSpec method = ParseMethod(o.method);
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    if (isMatrix)
+    {
+        *isMatrix = true;  // every method so far is a 3×3
+    }
+    return IlluminantChangeTransform({from.name, from.spectrum}, {to.name, to.spectrum}, method,
+                                     working);
 }
 
 std::string Fixed(double v, int decimals)

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <OpenColorIO/OpenColorIO.h>
 #include <CLI/CLI.hpp>
 
 #include "spectral/CieData.h"
@@ -23,6 +24,22 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile);
 
 /// Adds --observer with its check and default (1931).
 CLI::Option* AddObserverOption(CLI::App& app, std::string& value);
+
+/// --from/--to/--method/--working-space: an illuminant change without a config.
+struct RelightOptions
+{
+    std::string from;
+    std::string to;
+    std::string method = "bradford";
+    std::string workingSpace = "acescg";
+};
+
+/// Adds the four options above to a command.
+void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
+
+/// The illuminant-change transform the options name (one MatrixTransform for
+/// the linear methods), and whether it is a plain matrix.
+OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bool* isMatrix);
 
 /// Formats a double with `decimals` places for tables.
 std::string Fixed(double v, int decimals);

@@ -4,6 +4,8 @@
 // anything unexpected.
 #include <iostream>
 
+#include <OpenColorIO/OpenColorIO.h>
+
 #include "cli/Commands.h"
 #include "spectral/Exception.h"
 
@@ -18,6 +20,8 @@ int main(int argc, char** argv)
     bandlight::cli::AddXyzCommand(app);
     bandlight::cli::AddCriCommand(app);
     bandlight::cli::AddConfigCommand(app);
+    bandlight::cli::AddLutCommand(app);
+    bandlight::cli::AddApplyCommand(app);
     try
     {
         app.parse(argc, argv);
@@ -41,6 +45,12 @@ int main(int argc, char** argv)
     }
     catch (const bandlight::Exception& e)
     {
+        std::cerr << "bandlight: " << e.what() << "\n";
+        return 2;
+    }
+    catch (const OCIO_NAMESPACE::Exception& e)
+    {
+        // OpenColorIO's own messages name the file and what is wrong with it.
         std::cerr << "bandlight: " << e.what() << "\n";
         return 2;
     }

@@ -42,8 +42,9 @@ Mat3 SpaceToXyzD65(const RgbSpace& src)
 {
     const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
     const Vec3 d65 = WhiteXyz(0.3127, 0.3290);
-    const Mat3 cat = (ws - d65).norm() < 1e-9 ? Mat3::Identity()
-                                              : AdaptationMatrix(ws, d65, AdaptationMethod::BRADFORD);
+    const Mat3 cat = (ws - d65).norm() < 1e-9
+                         ? Mat3::Identity()
+                         : AdaptationMatrix(ws, d65, AdaptationMethod::BRADFORD);
     return cat * RgbToXyzMatrix(src.chromaticities);
 }
 
@@ -74,8 +75,7 @@ OCIO::TransformRcPtr SrgbDecode()
 /// base's reference.
 OCIO::TransformRcPtr SceneLinearToReference(const OCIO::ConstColorSpaceRcPtr& sceneLinear)
 {
-    if (OCIO::ConstTransformRcPtr t =
-            sceneLinear->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE))
+    if (OCIO::ConstTransformRcPtr t = sceneLinear->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE))
     {
         return t->createEditableCopy();
     }
@@ -190,7 +190,10 @@ void RequireLights(const ConfigOptions& o)
 
 }  // namespace
 
-std::string NamedTransformName(const std::string& lookName) { return "relight_" + lookName; }
+std::string NamedTransformName(const std::string& lookName)
+{
+    return "relight_" + lookName;
+}
 
 std::string ColorSpaceName(const RgbSpace& space)
 {
@@ -249,24 +252,23 @@ OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& o)
         config->addColorSpace(cs);
     }
     const RgbSpace& rec709 = FindRgbSpace("rec709");
-    OCIO::ColorSpaceRcPtr xyz = SceneSpace("CIE-XYZ-D65", "Scene-linear",
-                                           "CIE 1931 XYZ with a D65 white (Y = 1 for white)",
-                                           "scene-linear");
+    OCIO::ColorSpaceRcPtr xyz =
+        SceneSpace("CIE-XYZ-D65", "Scene-linear", "CIE 1931 XYZ with a D65 white (Y = 1 for white)",
+                   "scene-linear");
     xyz->setTransform(MakeMatrixTransform(SpaceToXyzD65(working).inverse()),
                       OCIO::COLORSPACE_DIR_TO_REFERENCE);
     config->addColorSpace(xyz);
 
-    OCIO::ColorSpaceRcPtr srgb =
-        SceneSpace("sRGB", "Display", "sRGB (IEC 61966-2-1) encoded Rec.709, for 8-bit images",
-                   "sdr-video");
+    OCIO::ColorSpaceRcPtr srgb = SceneSpace(
+        "sRGB", "Display", "sRGB (IEC 61966-2-1) encoded Rec.709, for 8-bit images", "sdr-video");
     OCIO::GroupTransformRcPtr srgbToRef = OCIO::GroupTransform::Create();
     srgbToRef->appendTransform(SrgbDecode());
     srgbToRef->appendTransform(MakeMatrixTransform(SpaceToSpace(rec709, working)));
     srgb->setTransform(srgbToRef, OCIO::COLORSPACE_DIR_TO_REFERENCE);
     config->addColorSpace(srgb);
 
-    OCIO::ColorSpaceRcPtr data =
-        SceneSpace("Non-Color", "Data", "Data, not colour: normals, masks; never converted", "data");
+    OCIO::ColorSpaceRcPtr data = SceneSpace(
+        "Non-Color", "Data", "Data, not colour: normals, masks; never converted", "data");
     data->setIsData(true);
     config->addColorSpace(data);
 
@@ -322,11 +324,10 @@ OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions
     {
         // Measure scene_linear against an interchange space and find which
         // built-in primaries (with the usual white adaptations) it matches.
-        const char* interchange = base->getColorSpace(OCIO::ROLE_INTERCHANGE_DISPLAY)
-                                      ? OCIO::ROLE_INTERCHANGE_DISPLAY
-                                  : base->getColorSpace(OCIO::ROLE_INTERCHANGE_SCENE)
-                                      ? OCIO::ROLE_INTERCHANGE_SCENE
-                                      : nullptr;
+        const char* interchange =
+            base->getColorSpace(OCIO::ROLE_INTERCHANGE_DISPLAY) ? OCIO::ROLE_INTERCHANGE_DISPLAY
+            : base->getColorSpace(OCIO::ROLE_INTERCHANGE_SCENE) ? OCIO::ROLE_INTERCHANGE_SCENE
+                                                                : nullptr;
         if (!interchange)
         {
             throw Exception("cannot tell the primaries of the base config's scene_linear space '" +

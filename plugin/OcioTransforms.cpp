@@ -23,7 +23,8 @@ OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m)
 
 namespace
 {
-OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name, const std::string& description)
+OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name,
+                                const std::string& description)
 {
     OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
     OCIO::FormatMetadata& md = g->getFormatMetadata();
@@ -63,15 +64,15 @@ OCIO::GroupTransformRcPtr MaterialTintTransform(const std::vector<double>& remit
                                                 Observer observer)
 {
     const Mat3 m = MaterialTintMatrix(remittance, bands, working, observer);
-    return Group(m, "material_tint", "Band-space remittance (R_diff) over " + bands.describe() +
-                                         " nm, in " + working.displayName);
+    return Group(m, "material_tint",
+                 "Band-space remittance (R_diff) over " + bands.describe() + " nm, in " +
+                     working.displayName);
 }
 
 Mat3 MeasureMatrix(const OCIO::ConstProcessorRcPtr& processor)
 {
-    const OCIO::ConstCPUProcessorRcPtr cpu =
-        processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                            OCIO::OPTIMIZATION_NONE);
+    const OCIO::ConstCPUProcessorRcPtr cpu = processor->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
     Mat3 out;
     for (int c = 0; c < 3; ++c)
     {
@@ -91,8 +92,8 @@ std::string SafeName(const std::string& text)
     std::string s = text;
     for (char& c : s)
     {
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                        c == '.' || c == '_' || c == '-';
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                        (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
         if (!ok)
         {
             c = '_';

@@ -90,8 +90,8 @@ MethodSpec ParseMethod(const std::string& name)
             m.method = ChangeMethod::BAND_WP;
             rest = rest.substr(0, dash);
         }
-        const bool digits = !rest.empty() && rest.size() <= 3 &&
-                            std::all_of(rest.begin(), rest.end(), ::isdigit);
+        const bool digits =
+            !rest.empty() && rest.size() <= 3 && std::all_of(rest.begin(), rest.end(), ::isdigit);
         const int count = digits ? std::stoi(rest) : 0;
         if (count < 3 || count > 300)
         {
@@ -133,8 +133,8 @@ std::string DescribeMethod(const MethodSpec& m)
         case ChangeMethod::BAND:
         {
             std::ostringstream s;
-            s << "The lecture's " << m.bands.size()
-              << "-band model: each band (" << m.bands.describe()
+            s << "The lecture's " << m.bands.size() << "-band model: each band ("
+              << m.bands.describe()
               << " nm) scaled by the ratio of the lights' band means, white luminance kept; "
                  "not exact on white, wrong where lights and surfaces are spiky.";
             return s.str();
@@ -172,8 +172,8 @@ Mat3 MaterialTintMatrix(const std::vector<double>& remittance, const BandSet& ba
         throw Exception("material tint: " + std::to_string(remittance.size()) +
                         " remittance values for " + std::to_string(bands.size()) + " bands");
     }
-    const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(remittance.data(),
-                                                                Eigen::Index(remittance.size()));
+    const Eigen::VectorXd r =
+        Eigen::Map<const Eigen::VectorXd>(remittance.data(), Eigen::Index(remittance.size()));
     return BandToWorkingMatrix(bands, working, observer) * r.asDiagonal() *
            WorkingToBandMatrix(bands, working, observer);
 }
@@ -191,11 +191,10 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
         case ChangeMethod::BRADFORD:
         case ChangeMethod::CAT02:
         {
-            const AdaptationMethod cat = method.method == ChangeMethod::VON_KRIES
-                                             ? AdaptationMethod::XYZ_SCALING
-                                         : method.method == ChangeMethod::BRADFORD
-                                             ? AdaptationMethod::BRADFORD
-                                             : AdaptationMethod::CAT02;
+            const AdaptationMethod cat =
+                method.method == ChangeMethod::VON_KRIES  ? AdaptationMethod::XYZ_SCALING
+                : method.method == ChangeMethod::BRADFORD ? AdaptationMethod::BRADFORD
+                                                          : AdaptationMethod::CAT02;
             return mInv * AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer), cat) * m;
         }
         case ChangeMethod::BAND:

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `bandlight lut`: an illuminant change as a LUT file, written by OCIO.
+#include <iostream>
+#include <memory>
+
+#include "cli/Commands.h"
+#include "cli/Common.h"
+#include "luts/LutWriter.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+
+struct LutCommandOptions
+{
+    RelightOptions relight;
+    std::string format = "clf";
+    int size = 33;
+    std::string shaper = "log2";
+    std::string out;
+};
+
+void RunLut(const LutCommandOptions& o, bool sizeGiven)
+{
+    bool isMatrix = false;
+    const OCIO::GroupTransformRcPtr exact = RelightTransform(o.relight, &isMatrix);
+    LutOptions options;
+    options.format = ParseLutFormat(o.format);
+    options.size = o.size;
+    options.forceLattice = sizeGiven;
+    options.shaper = ShaperSpec::Parse(o.shaper);
+    const char* description = exact->getFormatMetadata().getChildElement(0).getElementValue();
+    options.description = description ? description : "";
+    const LutFiles files = WriteLut(exact, isMatrix, options, o.out);
+    std::cout << "Wrote " << files.lut << ": ";
+    if (!files.lattice)
+    {
+        std::cout << "the exact 3x3 matrix\n";
+        return;
+    }
+    std::cout << o.size << "^3 3D LUT, shaper " << options.shaper.describe() << "\n";
+    if (!files.shaper.empty())
+    {
+        std::cout << "Wrote " << files.shaper << ": the shaper; apply it before the LUT"
+                  << (files.outputEncoded
+                          ? ", and its inverse after (3dl output is shaper-encoded)\n"
+                          : "\n");
+    }
+}
+
+}  // namespace
+
+void AddLutCommand(CLI::App& app)
+{
+    auto o = std::make_shared<LutCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("lut",
+                                       "Write an illuminant change as a LUT file (CLF, CTF, cube, "
+                                       "spi3d, 3dl) through OpenColorIO's writers");
+    AddRelightOptions(*cmd, o->relight, true);
+    cmd->add_option("--format", o->format, "clf, ctf, cube, spi3d or 3dl")->capture_default_str();
+    CLI::Option* size = cmd->add_option(
+        "--size", o->size,
+        "3D LUT size per axis; for CLF/CTF, giving it bakes a 3D LUT instead of the matrix");
+    size->capture_default_str();
+    cmd->add_option("--shaper", o->shaper,
+                    "Shaper into the 3D LUT's domain: log2 (scene-linear -0.01 to 131072) or none "
+                    "(linear 0 to 1)")
+        ->capture_default_str();
+    cmd->add_option("-o,--out", o->out, "Output file")->required();
+    cmd->callback([o, size] { RunLut(*o, size->count() > 0); });
+}
+
+}  // namespace bandlight::cli

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <OpenColorIO/OpenColorIO.h>
+
+namespace bandlight::cli
+{
+namespace OCIO = OCIO_NAMESPACE;
+
+/// Applies an OCIO processor to an image file and writes the result:
+/// through OpenImageIO, any format it reads; the output keeps the input's
+/// pixel type, channel names, alpha and metadata, and appears only when it
+/// is complete (written to a temporary file, then renamed). Only the R, G,
+/// B channels change; alpha and any other channel pass through. The pixels
+/// are processed on `threads` threads (0: all cores). Throws Exception
+/// naming the file on any read or write failure.
+void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
+                  const std::string& out, int threads, const std::string& note);
+
+/// Applies a processor in place to an interleaved float image with RGB in
+/// channels rgb[0..2] and `channels` channels per pixel, split by rows over
+/// `threads` threads.
+void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long width, long height,
+                   int channels, const int rgb[3], int threads);
+
+/// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
+/// gives "plate.1001.exr"; a name without a pattern is returned unchanged.
+std::string ExpandFramePattern(const std::string& pattern, int frame);
+bool HasFramePattern(const std::string& pattern);
+
+/// Parses "1001-1100" or "1001" into the frames it names; throws Exception.
+std::vector<int> ParseFrameRange(const std::string& text);
+
+}  // namespace bandlight::cli

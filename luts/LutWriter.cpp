@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "luts/LutWriter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <iomanip>
+
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+
+namespace
+{
+
+constexpr const char* kClfFormat = "Academy/ASC Common LUT Format";
+constexpr const char* kCtfFormat = "Color Transform Format";
+
+OCIO::GroupTransformRcPtr AsGroup(const OCIO::ConstTransformRcPtr& t)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    g->appendTransform(t->createEditableCopy());
+    return g;
+}
+
+/// Runs `t` over a buffer of RGB floats in place.
+void Apply(const OCIO::ConstTransformRcPtr& t, std::vector<float>& rgb)
+{
+    OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
+    OCIO::ConstCPUProcessorRcPtr cpu = raw->getProcessor(t)->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+    OCIO::PackedImageDesc desc(rgb.data(), long(rgb.size() / 3), 1, 3);
+    cpu->apply(desc);
+}
+
+void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const std::string& path,
+                const std::string& description)
+{
+    if (!description.empty())
+    {
+        group->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
+    }
+    OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
+    WriteFileAtomically(
+        path, [&](std::ostream& os)
+        { group->write(raw, format == LutFormat::CTF ? kCtfFormat : kClfFormat, os); });
+}
+
+/// A config holding the lattice's input and output spaces for OCIO's Baker:
+/// "lut_in" is the shaper-encoded linear space, "lut_out" the result of the
+/// exact transform (shaper-encoded again when `encodeOutput`).
+OCIO::ConfigRcPtr BakerConfig(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
+                              bool encodeOutput)
+{
+    OCIO::ConfigRcPtr config = OCIO::Config::CreateRaw()->createEditableCopy();
+    OCIO::ColorSpaceRcPtr in = OCIO::ColorSpace::Create();
+    in->setName("lut_in");
+    if (OCIO::TransformRcPtr s = shaper.transform())
+    {
+        in->setTransform(s, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
+    }
+    config->addColorSpace(in);
+    OCIO::ColorSpaceRcPtr out = OCIO::ColorSpace::Create();
+    out->setName("lut_out");
+    OCIO::GroupTransformRcPtr g = AsGroup(exact);
+    if (encodeOutput)
+    {
+        if (OCIO::TransformRcPtr s = shaper.transform())
+        {
+            g->appendTransform(s);
+        }
+    }
+    out->setTransform(g, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
+    config->addColorSpace(out);
+    return config;
+}
+
+void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& path)
+{
+    // SPI 3D LUT: "SPILUT 1.0", "3 3", the grid size, then one line per node
+    // "i j k r g b"; OCIO's reader (FileFormatSpi3D) takes the indices as given.
+    WriteFileAtomically(
+        path,
+        [&](std::ostream& os)
+        {
+            os << "SPILUT 1.0\n3 3\n" << size << " " << size << " " << size << "\n";
+            os << std::setprecision(9);
+            for (int r = 0; r < size; ++r)
+            {
+                for (int g = 0; g < size; ++g)
+                {
+                    for (int b = 0; b < size; ++b)
+                    {
+                        const size_t i =
+                            (size_t(b) * size_t(size) + size_t(g)) * size_t(size) + size_t(r);
+                        os << r << ' ' << g << ' ' << b << ' ' << lattice[3 * i] << ' '
+                           << lattice[3 * i + 1] << ' ' << lattice[3 * i + 2] << '\n';
+                    }
+                }
+            }
+        });
+}
+
+std::string ShaperCompanionPath(const std::string& path)
+{
+    const size_t slash = path.find_last_of('/');
+    const size_t dot = path.find_last_of('.');
+    const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return (hasExt ? path.substr(0, dot) : path) + ".shaper.clf";
+}
+
+}  // namespace
+
+LutFormat ParseLutFormat(const std::string& text)
+{
+    std::string t = text;
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (t == "clf")
+    {
+        return LutFormat::CLF;
+    }
+    if (t == "ctf")
+    {
+        return LutFormat::CTF;
+    }
+    if (t == "cube")
+    {
+        return LutFormat::CUBE;
+    }
+    if (t == "spi3d")
+    {
+        return LutFormat::SPI3D;
+    }
+    if (t == "3dl")
+    {
+        return LutFormat::THREE_DL;
+    }
+    throw Exception("unknown LUT format '" + text + "' (clf, ctf, cube, spi3d, 3dl)");
+}
+
+const char* LutExtension(LutFormat format)
+{
+    switch (format)
+    {
+        case LutFormat::CLF:
+            return "clf";
+        case LutFormat::CTF:
+            return "ctf";
+        case LutFormat::CUBE:
+            return "cube";
+        case LutFormat::SPI3D:
+            return "spi3d";
+        case LutFormat::THREE_DL:
+            return "3dl";
+    }
+    return "";
+}
+
+std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
+                               int size, bool encodeOutput)
+{
+    if (size < 2 || size > 129)
+    {
+        throw Exception("3D LUT size must be 2 to 129, got " + std::to_string(size));
+    }
+    const size_t n = size_t(size) * size_t(size) * size_t(size);
+    std::vector<float> rgb(3 * n);
+    for (size_t i = 0; i < n; ++i)
+    {
+        const size_t r = i % size_t(size);
+        const size_t g = (i / size_t(size)) % size_t(size);
+        const size_t b = i / (size_t(size) * size_t(size));
+        rgb[3 * i] = float(double(r) / double(size - 1));
+        rgb[3 * i + 1] = float(double(g) / double(size - 1));
+        rgb[3 * i + 2] = float(double(b) / double(size - 1));
+    }
+    OCIO::GroupTransformRcPtr chain = OCIO::GroupTransform::Create();
+    if (OCIO::TransformRcPtr s = shaper.transform())
+    {
+        s->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+        chain->appendTransform(s);
+    }
+    chain->appendTransform(exact->createEditableCopy());
+    if (encodeOutput)
+    {
+        if (OCIO::TransformRcPtr s = shaper.transform())
+        {
+            chain->appendTransform(s);
+        }
+    }
+    Apply(chain, rgb);
+    return rgb;
+}
+
+OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
+                                           const ShaperSpec& shaper, int size)
+{
+    const std::vector<float> lattice = BakeLattice(exact, shaper, size, false);
+    OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(size));
+    lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+    lut->setFileOutputBitDepth(OCIO::BIT_DEPTH_F32);
+    for (int b = 0; b < size; ++b)
+    {
+        for (int g = 0; g < size; ++g)
+        {
+            for (int r = 0; r < size; ++r)
+            {
+                const size_t i = (size_t(b) * size_t(size) + size_t(g)) * size_t(size) + size_t(r);
+                lut->setValue(unsigned(r), unsigned(g), unsigned(b), lattice[3 * i],
+                              lattice[3 * i + 1], lattice[3 * i + 2]);
+            }
+        }
+    }
+    OCIO::GroupTransformRcPtr group = OCIO::GroupTransform::Create();
+    if (OCIO::TransformRcPtr s = shaper.transform())
+    {
+        group->appendTransform(s);
+    }
+    group->appendTransform(lut);
+    return group;
+}
+
+LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& o,
+                  const std::string& path)
+{
+    LutFiles files;
+    files.lut = path;
+    if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
+    {
+        if (isMatrix && !o.forceLattice)
+        {
+            WriteGroup(AsGroup(exact), o.format, path, o.description);
+            return files;
+        }
+        files.lattice = true;
+        WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description);
+        return files;
+    }
+
+    files.lattice = true;
+    files.outputEncoded =
+        o.format == LutFormat::THREE_DL && o.shaper.kind != ShaperSpec::Kind::NONE;
+    // Bake into memory first, so a failure leaves no file behind.
+    if (o.format == LutFormat::SPI3D)
+    {
+        WriteSpi3d(BakeLattice(exact, o.shaper, o.size, false), o.size, path);
+    }
+    else
+    {
+        OCIO::BakerRcPtr baker = OCIO::Baker::Create();
+        baker->setConfig(BakerConfig(exact, o.shaper, files.outputEncoded));
+        baker->setFormat(o.format == LutFormat::CUBE ? "iridas_cube" : "flame");
+        baker->setInputSpace("lut_in");
+        baker->setTargetSpace("lut_out");
+        baker->setCubeSize(o.size);
+        if (!o.description.empty())
+        {
+            baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
+                                                       o.description.c_str());
+        }
+        WriteFileAtomically(path, [&](std::ostream& os) { baker->bake(os); });
+    }
+    if (OCIO::TransformRcPtr s = o.shaper.transform())
+    {
+        files.shaper = ShaperCompanionPath(path);
+        OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+        g->appendTransform(s);
+        WriteGroup(g, LutFormat::CLF, files.shaper, "bandlight shaper, " + o.shaper.describe());
+    }
+    return files;
+}
+
+}  // namespace bandlight

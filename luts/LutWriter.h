@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include "luts/Shaper.h"
+
+namespace bandlight
+{
+
+/// LUT file formats bandlight writes.
+enum class LutFormat
+{
+    CLF,       ///< Academy/ASC Common LUT Format, through GroupTransform::write
+    CTF,       ///< Autodesk Color Transform Format, through GroupTransform::write
+    CUBE,      ///< Iridas/Adobe .cube 3D LUT, through OCIO's Baker (iridas_cube)
+    SPI3D,     ///< Sony Pictures Imageworks .spi3d (OCIO 2.1 has no writer; see WriteLut)
+    THREE_DL,  ///< Autodesk Flame .3dl, through OCIO's Baker (flame): integer, shaper-encoded out
+};
+
+/// "clf", "ctf", "cube", "spi3d", "3dl" (case-insensitive); throws Exception otherwise.
+LutFormat ParseLutFormat(const std::string& text);
+const char* LutExtension(LutFormat format);
+
+struct LutOptions
+{
+    LutFormat format = LutFormat::CLF;
+    int size = 33;              ///< lattice points per axis for 3D LUTs (2–129)
+    bool forceLattice = false;  ///< bake a 3D LUT even where a matrix fits (CLF/CTF)
+    ShaperSpec shaper;
+    std::string description;  ///< written into formats that carry metadata
+};
+
+/// What WriteLut wrote.
+struct LutFiles
+{
+    std::string lut;
+    std::string shaper;  ///< companion shaper CLF for 3D-only formats ("" if none)
+    bool lattice = false;
+    bool outputEncoded = false;  ///< 3dl: the LUT's output is shaper-encoded, not linear
+};
+
+/// The exact transform sampled on a size³ lattice over the shaper's domain:
+/// node (r, g, b) holds exact(decode(node)) — or its shaper encoding when
+/// `encodeOutput` — red varying fastest, three floats per node.
+std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
+                               int size, bool encodeOutput);
+
+/// Shaper then 3D LUT (tetrahedral) as one OCIO group: the lattice form of
+/// `exact`, applicable to scene-linear input.
+OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
+                                           const ShaperSpec& shaper, int size);
+
+/// Writes `exact` (a transform on linear RGB) to `path` in `options.format`,
+/// atomically. CLF/CTF hold a linear transform (`isMatrix`) as the matrix
+/// itself, anything else as shaper + 3D LUT in one file. The 3D-only
+/// formats hold the lattice over the shaper's domain and get the shaper as a
+/// companion `<stem>.shaper.clf` (apply it first; for 3dl, whose integer
+/// output cannot hold HDR, apply its inverse after). spi3d is written here
+/// because OCIO 2.1 offers no spi3d writer; OCIO reads it back in the tests.
+LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& options,
+                  const std::string& path);
+
+}  // namespace bandlight
