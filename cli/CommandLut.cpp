@@ -43,10 +43,8 @@ void RunLut(const LutCommandOptions& o, bool sizeGiven)
     std::cout << o.size << "^3 3D LUT, shaper " << options.shaper.describe() << "\n";
     if (!files.shaper.empty())
     {
-        std::cout << "Wrote " << files.shaper << ": the shaper; apply it before the LUT"
-                  << (files.outputEncoded
-                          ? ", and its inverse after (3dl output is shaper-encoded)\n"
-                          : "\n");
+        std::cout << "Wrote " << files.shaper
+                  << ": the shaper; apply it before the LUT and its inverse after\n";
     }
 }
 
@@ -65,7 +63,7 @@ void AddLutCommand(CLI::App& app)
         "3D LUT size per axis; for CLF/CTF, giving it bakes a 3D LUT instead of the matrix");
     size->capture_default_str();
     cmd->add_option("--shaper", o->shaper,
-                    "Shaper into the 3D LUT's domain: log2 (scene-linear -0.01 to 131072) or none "
+                    "Shaper into the 3D LUT's domain: log2 (scene-linear -0.0005 to 131072) or none "
                     "(linear 0 to 1)")
         ->capture_default_str();
     cmd->add_option("-o,--out", o->out, "Output file")->required();

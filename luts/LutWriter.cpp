@@ -17,8 +17,13 @@ namespace
 constexpr const char* kClfFormat = "Academy/ASC Common LUT Format";
 constexpr const char* kCtfFormat = "Color Transform Format";
 
+/// `t` as a group; a group is copied whole, keeping its name and description.
 OCIO::GroupTransformRcPtr AsGroup(const OCIO::ConstTransformRcPtr& t)
 {
+    if (auto g = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(t))
+    {
+        return OCIO::DynamicPtrCast<OCIO::GroupTransform>(g->createEditableCopy());
+    }
     OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
     g->appendTransform(t->createEditableCopy());
     return g;
@@ -37,7 +42,7 @@ void Apply(const OCIO::ConstTransformRcPtr& t, std::vector<float>& rgb)
 void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const std::string& path,
                 const std::string& description)
 {
-    if (!description.empty())
+    if (!description.empty() && !group->getFormatMetadata().getNumChildrenElements())
     {
         group->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
     }
@@ -196,7 +201,11 @@ std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const Sha
 OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
                                            const ShaperSpec& shaper, int size)
 {
-    const std::vector<float> lattice = BakeLattice(exact, shaper, size, false);
+    // Shaper-encoded out as well as in: along any ray from black the exact
+    // transform is then linear in the LUT's coordinates in the log segment
+    // (and affine in the linear one), which is what tetrahedral
+    // interpolation reproduces exactly; linear output would be exponential.
+    const std::vector<float> lattice = BakeLattice(exact, shaper, size, true);
     OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(size));
     lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
     lut->setFileOutputBitDepth(OCIO::BIT_DEPTH_F32);
@@ -218,6 +227,11 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
         group->appendTransform(s);
     }
     group->appendTransform(lut);
+    if (OCIO::TransformRcPtr s = shaper.transform())
+    {
+        s->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+        group->appendTransform(s);
+    }
     return group;
 }
 
@@ -239,12 +253,11 @@ LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const L
     }
 
     files.lattice = true;
-    files.outputEncoded =
-        o.format == LutFormat::THREE_DL && o.shaper.kind != ShaperSpec::Kind::NONE;
+    files.outputEncoded = o.shaper.kind != ShaperSpec::Kind::NONE;
     // Bake into memory first, so a failure leaves no file behind.
     if (o.format == LutFormat::SPI3D)
     {
-        WriteSpi3d(BakeLattice(exact, o.shaper, o.size, false), o.size, path);
+        WriteSpi3d(BakeLattice(exact, o.shaper, o.size, files.outputEncoded), o.size, path);
     }
     else
     {

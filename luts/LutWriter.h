@@ -18,7 +18,7 @@ enum class LutFormat
     CTF,       ///< Autodesk Color Transform Format, through GroupTransform::write
     CUBE,      ///< Iridas/Adobe .cube 3D LUT, through OCIO's Baker (iridas_cube)
     SPI3D,     ///< Sony Pictures Imageworks .spi3d (OCIO 2.1 has no writer; see WriteLut)
-    THREE_DL,  ///< Autodesk Flame .3dl, through OCIO's Baker (flame): integer, shaper-encoded out
+    THREE_DL,  ///< Autodesk Flame .3dl, through OCIO's Baker (flame): integer values
 };
 
 /// "clf", "ctf", "cube", "spi3d", "3dl" (case-insensitive); throws Exception otherwise.
@@ -40,7 +40,7 @@ struct LutFiles
     std::string lut;
     std::string shaper;  ///< companion shaper CLF for 3D-only formats ("" if none)
     bool lattice = false;
-    bool outputEncoded = false;  ///< 3dl: the LUT's output is shaper-encoded, not linear
+    bool outputEncoded = false;  ///< the 3D LUT's output is shaper-encoded: apply the inverse after
 };
 
 /// The exact transform sampled on a size³ lattice over the shaper's domain:
@@ -49,18 +49,19 @@ struct LutFiles
 std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
                                int size, bool encodeOutput);
 
-/// Shaper then 3D LUT (tetrahedral) as one OCIO group: the lattice form of
-/// `exact`, applicable to scene-linear input.
+/// Shaper, 3D LUT (tetrahedral, shaper-encoded in and out), inverse shaper,
+/// as one OCIO group: the lattice form of `exact` for scene-linear input.
 OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
                                            const ShaperSpec& shaper, int size);
 
 /// Writes `exact` (a transform on linear RGB) to `path` in `options.format`,
 /// atomically. CLF/CTF hold a linear transform (`isMatrix`) as the matrix
 /// itself, anything else as shaper + 3D LUT in one file. The 3D-only
-/// formats hold the lattice over the shaper's domain and get the shaper as a
-/// companion `<stem>.shaper.clf` (apply it first; for 3dl, whose integer
-/// output cannot hold HDR, apply its inverse after). spi3d is written here
-/// because OCIO 2.1 offers no spi3d writer; OCIO reads it back in the tests.
+/// formats hold the lattice over the shaper's domain, shaper-encoded in and
+/// out, and get the shaper as a companion `<stem>.shaper.clf`: apply it
+/// before the LUT and its inverse after (so 3dl's integer output holds HDR
+/// too). spi3d is written here because OCIO 2.1 offers no spi3d writer; OCIO
+/// reads it back in the tests.
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& options,
                   const std::string& path);
 

@@ -13,11 +13,16 @@ namespace OCIO = OCIO_NAMESPACE;
 ///
 /// `LOG2`: linear below `breakLinear`, log2 above, continuous with a
 /// continuous slope (OCIO's LogCameraTransform, base 2), scaled so that
-/// `minLinear` (a negative value) maps to 0 and `maxLinear` to 1. The LUT's
-/// nodes then sit about a stop apart in the highlights and evenly in linear
-/// near zero and below it, where any linear transform is reproduced exactly.
-/// Values outside [minLinear, maxLinear] are clamped by the LUT: that is the
-/// stated range.
+/// `minLinear` (a small negative value) maps to 0 and `maxLinear` to 1.
+/// The 3D LUT is shaper-encoded in and out. Along any grey ray the exact
+/// transform is then linear in the LUT's coordinates wherever input and
+/// output are both above the break (log2) or both below it (linear), which
+/// tetrahedral interpolation reproduces exactly: greys from 1e-4 to 65504
+/// come out to float precision. Chromatic colours carry the interpolation
+/// error of a matrix seen in log space (measured in the README). The break
+/// sits at 2^-15 so that the kink stays below 1e-4; the negative range it
+/// leaves is small: values below `minLinear` are clamped by the LUT, and
+/// that is the stated range.
 ///
 /// `NONE`: the identity; the LUT covers linear [0, 1] (display-referred data).
 struct ShaperSpec
@@ -28,8 +33,8 @@ struct ShaperSpec
         LOG2,
     };
     Kind kind = Kind::LOG2;
-    double minLinear = -0.01;
-    double breakLinear = 1.0 / 64.0;
+    double minLinear = -0.0005;
+    double breakLinear = 1.0 / 32768.0;  // 2^-15 ≈ 3.05e-5
     double maxLinear = 131072.0;  // 2^17: covers half-float's 65504 with a stop to spare
 
     /// "log2" or "none"; throws Exception otherwise.

@@ -186,6 +186,15 @@ void RequireLights(const ConfigOptions& o)
     {
         ParseMethod(m);
     }
+    std::set<std::string> names;
+    for (const Light& l : o.lights)
+    {
+        if (!names.insert(SafeName(l.name)).second)
+        {
+            throw Exception("two illuminants share a name ('" + l.name +
+                            "'): look names would clash");
+        }
+    }
 }
 
 }  // namespace
@@ -365,12 +374,10 @@ OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions
     }
 
     OCIO::ConfigRcPtr config = base->createEditableCopy();
-    if (config->getColorSpace(kBandSpaceName))
+    if (!config->getColorSpace(kBandSpaceName))  // a bandlight config has it already
     {
-        throw Exception(std::string("the base config already has a colour space named '") +
-                        kBandSpaceName + "'");
+        AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));
     }
-    AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));
     AddLooks(*config, o, working, processSpace);
     config->validate();
     return config;
