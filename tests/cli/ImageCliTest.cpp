@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// End-to-end tests of config, lut and apply against the hosts' own tools:
+// ociocheck and oiiotool.
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
+
+using Catch::Matchers::Contains;
+
+namespace
+{
+
+struct Result
+{
+    int code = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string Temp(const std::string& name)
+{
+    const char* dir = std::getenv("TMPDIR");
+    return std::string(dir ? dir : "/tmp") + "/bandlight_image_test_" + name;
+}
+
+Result Sh(const std::string& cmd)
+{
+    const std::string errFile = Temp("stderr.txt");
+    Result r;
+    FILE* p = popen((cmd + " 2>'" + errFile + "'").c_str(), "r");
+    REQUIRE(p);
+    char buf[4096];
+    for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;)
+    {
+        r.out.append(buf, n);
+    }
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    std::stringstream s;
+    s << e.rdbuf();
+    r.err = s.str();
+    return r;
+}
+
+Result Bandlight(const std::string& args) { return Sh(std::string("'") + BANDLIGHT_EXE + "' " + args); }
+
+bool Exists(const std::string& path)
+{
+    struct stat st;
+    return ::stat(path.c_str(), &st) == 0;
+}
+
+/// A float EXR with HDR colour, an alpha ramp and an extra depth channel.
+void WriteTestImage(const std::string& path, int width = 64, int height = 48, unsigned seed = 1)
+{
+    OIIO::ImageSpec spec(width, height, 5, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A", "Z"};
+    spec.alpha_channel = 3;
+    spec.z_channel = 4;
+    spec.attribute("Copyright", "bandlight test plate");
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-13.0f, 16.0f);
+    std::vector<float> px(size_t(width) * height * 5);
+    for (size_t i = 0; i < size_t(width) * height; ++i)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            px[5 * i + c] = std::exp2(u(rng));
+        }
+        px[5 * i + 3] = float(i % 97) / 96.0f;
+        px[5 * i + 4] = float(i);
+    }
+    auto out = OIIO::ImageOutput::create(path);
+    REQUIRE(out);
+    REQUIRE(out->open(path, spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    REQUIRE(out->close());
+}
+
+OIIO::ImageBuf Read(const std::string& path)
+{
+    OIIO::ImageBuf buf(path);
+    REQUIRE(buf.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+    return buf;
+}
+
+/// Worst |a - b| / max(1, |b|) over channels [c0, c1).
+double WorstRelative(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, int c0, int c1)
+{
+    REQUIRE(a.spec().width == b.spec().width);
+    REQUIRE(a.spec().height == b.spec().height);
+    double worst = 0.0;
+    for (OIIO::ImageBuf::ConstIterator<float> pa(a), pb(b); !pa.done(); ++pa, ++pb)
+    {
+        for (int c = c0; c < c1; ++c)
+        {
+            worst = std::max(worst, double(std::abs(pa[c] - pb[c])) /
+                                        std::max(1.0, double(std::abs(pb[c]))));
+        }
+    }
+    return worst;
+}
+
+std::string ConfigDir()
+{
+    static const std::string dir = [] {
+        const std::string d = Temp("config");
+        const Result r = Bandlight("config --out '" + d + "' --methods none,bradford,band3,band3-wp,band5");
+        REQUIRE(r.code == 0);
+        return d;
+    }();
+    return dir;
+}
+
+}  // namespace
+
+TEST_CASE("ociocheck passes on every generated config", "[cli][ocio]")
+{
+    const std::string base = ConfigDir();
+    struct Case
+    {
+        std::string name;
+        std::string args;
+    };
+    const std::vector<Case> cases = {
+        {"default", ""},
+        {"rec709", "--working-space lin-rec709 --illuminants A,D50,D65,F7"},
+        {"rec2020-10deg", "--working-space rec2020 --observer 1964 --methods cat02,band8-wp"},
+        {"extended", "--base '" + base + "/config.ocio' --illuminants D50,D75,F12"},
+    };
+    for (const Case& c : cases)
+    {
+        const std::string dir = Temp("check_" + c.name);
+        const Result made = Bandlight("config --out '" + dir + "' " + c.args);
+        INFO(c.name << ": " << made.err);
+        REQUIRE(made.code == 0);
+        const Result check = Sh("ociocheck --iconfig '" + dir + "/config.ocio'");
+        INFO(check.out);
+        CHECK(check.code == 0);
+        CHECK_THAT(check.out, Contains("** Validation **\npassed"));
+        CHECK(check.out.find("ERROR") == std::string::npos);
+    }
+}
+
+TEST_CASE("apply gives oiiotool's pixels for the same look and config", "[cli][oiio]")
+{
+    const std::string in = Temp("plate.exr");
+    WriteTestImage(in);
+    for (const char* look : {"band3_A_to_D65", "bradford_F11_to_D65", "band3-wp_D65_to_F2",
+                             "band5_C_to_A"})
+    {
+        const std::string ours = Temp(std::string("ours_") + look + ".exr");
+        const std::string theirs = Temp(std::string("oiiotool_") + look + ".exr");
+        const Result a = Bandlight("apply '" + in + "' '" + ours + "' --look " + look +
+                                   " --config '" + ConfigDir() + "'");
+        INFO(a.err);
+        REQUIRE(a.code == 0);
+        const Result b = Sh("oiiotool '" + in + "' --colorconfig '" + ConfigDir() +
+                            "/config.ocio' --ociolook:from=ACEScg:to=ACEScg " + look + " -o '" +
+                            theirs + "'");
+        INFO(b.err);
+        REQUIRE(b.code == 0);
+        const OIIO::ImageBuf mine = Read(ours), ref = Read(theirs), orig = Read(in);
+        CHECK(WorstRelative(mine, ref, 0, 3) <= 1e-5);
+        // Alpha and depth pass through untouched; names and metadata are kept.
+        CHECK(WorstRelative(mine, orig, 3, 5) == 0.0);
+        CHECK(mine.spec().channelnames == orig.spec().channelnames);
+        CHECK(mine.spec().get_string_attribute("Copyright") == "bandlight test plate");
+        CHECK_THAT(mine.spec().get_string_attribute("bandlight:transform"), Contains(look));
+    }
+}
+
+TEST_CASE("apply without a config is the same as the config's look", "[cli][oiio]")
+{
+    const std::string in = Temp("plate2.exr");
+    WriteTestImage(in, 32, 16, 2);
+    const std::string a = Temp("direct.exr"), b = Temp("vialook.exr");
+    REQUIRE(Bandlight("apply '" + in + "' '" + a + "' --from F11 --to D65 --method band3").code == 0);
+    REQUIRE(Bandlight("apply '" + in + "' '" + b + "' --look band3_F11_to_D65 --config '" +
+                      ConfigDir() + "'")
+                .code == 0);
+    CHECK(WorstRelative(Read(a), Read(b), 0, 3) <= 1e-6);
+}
+
+TEST_CASE("apply runs over a frame range for farm splits", "[cli][oiio]")
+{
+    for (int f : {1001, 1002, 1003})
+    {
+        WriteTestImage(Temp("seq." + std::to_string(f) + ".exr"), 16, 8, unsigned(f));
+    }
+    const Result r = Bandlight("apply '" + Temp("seq.####.exr") + "' '" + Temp("relit.####.exr") +
+                               "' --from A --to D65 --frames 1002-1003");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_FALSE(Exists(Temp("relit.1001.exr")));
+    CHECK(Exists(Temp("relit.1002.exr")));
+    CHECK(Exists(Temp("relit.1003.exr")));
+    const Result missing = Bandlight("apply '" + Temp("seq.####.exr") + "' '" +
+                                     Temp("relit.####.exr") + "' --from A --to D65 --frames 1003-1004");
+    CHECK(missing.code == 2);
+    CHECK_THAT(missing.err, Contains("seq.1004.exr: cannot read image"));
+}
+
+TEST_CASE("lut writes files OCIO reads back", "[cli][ocio]")
+{
+    for (const char* format : {"clf", "ctf", "cube", "spi3d", "3dl"})
+    {
+        const std::string path = Temp(std::string("relight.") + format);
+        const Result r = Bandlight("lut --from A --to D65 --method band3 --format " +
+                                   std::string(format) + " --size 17 -o '" + path + "'");
+        INFO(format << ": " << r.err);
+        REQUIRE(r.code == 0);
+        CHECK(Exists(path));
+        const Result check = Sh("ociochecklut '" + path + "' 0.18 0.18 0.18");
+        INFO(check.out);
+        CHECK(check.code == 0);
+    }
+}
+
+TEST_CASE("Bad input: one line, exit code 2, nothing half-written", "[cli]")
+{
+    const std::string in = Temp("plate3.exr");
+    WriteTestImage(in, 8, 8, 3);
+    const std::string out = Temp("keep.exr");
+    REQUIRE(Bandlight("apply '" + in + "' '" + out + "' --from A --to D65").code == 0);
+    struct stat before;
+    REQUIRE(::stat(out.c_str(), &before) == 0);
+
+    struct Case
+    {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"apply '" + in + "' '" + out + "' --from Candle --to D65", "unknown illuminant 'Candle'"},
+        {"apply '" + in + "' '" + out + "' --from A --to D65 --method magic", "unknown method 'magic'"},
+        {"apply '" + Temp("nope.exr") + "' '" + out + "' --from A --to D65", "nope.exr: cannot read image"},
+        {"apply '" + in + "' '" + out + "' --look sepia --config '" + ConfigDir() + "'",
+         "look 'sepia' is not in"},
+        {"apply '" + in + "' '" + out + "' --look band3_A_to_D65 --config /nonexistent",
+         "/nonexistent/config.ocio: cannot read config"},
+        {"apply '" + in + "' '" + Temp("out.unknownformat") + "' --from A --to D65",
+         "no image writer"},
+        {"config --out '" + Temp("cfg_bad") + "' --illuminants A,Candle", "unknown illuminant 'Candle'"},
+        {"config --out '" + Temp("cfg_bad") + "' --methods bradford,magic", "unknown method 'magic'"},
+        {"config --out '" + Temp("cfg_bad") + "' --base /nonexistent.ocio", "/nonexistent.ocio: cannot read the base config"},
+        {"config --out '" + Temp("cfg_bad") + "' --base '" + ConfigDir() + "/config.ocio'",
+         "clashes with a look"},
+        {"lut --from A --to D65 --format icc -o '" + Temp("x.icc") + "'", "unknown LUT format 'icc'"},
+    };
+    for (const Case& c : cases)
+    {
+        const Result r = Bandlight(c.args);
+        INFO(c.args << "\n" << r.err);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.err, Contains(c.message));
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    }
+    CHECK_FALSE(Exists(Temp("cfg_bad") + "/config.ocio"));
+    CHECK_FALSE(Exists(Temp("out.unknownformat")));
+    struct stat after;
+    REQUIRE(::stat(out.c_str(), &after) == 0);
+    CHECK(after.st_mtime == before.st_mtime);  // the earlier output is intact
+    // No temporary file is left behind in the output directory.
+    const Result left = Sh("ls '" + Temp("") + "'* | grep -c '\\.tmp-' || true");
+    CHECK(left.out == "0\n");
+}
