@@ -62,9 +62,10 @@ void AddLutCommand(CLI::App& app)
         "--size", o->size,
         "3D LUT size per axis; for CLF/CTF, giving it bakes a 3D LUT instead of the matrix");
     size->capture_default_str();
-    cmd->add_option("--shaper", o->shaper,
-                    "Shaper into the 3D LUT's domain: log2 (scene-linear -0.0005 to 131072) or none "
-                    "(linear 0 to 1)")
+    cmd->add_option(
+           "--shaper", o->shaper,
+           "Shaper into the 3D LUT's domain: log2 (scene-linear -0.0005 to 131072) or none "
+           "(linear 0 to 1)")
         ->capture_default_str();
     cmd->add_option("-o,--out", o->out, "Output file")->required();
     cmd->callback([o, size] { RunLut(*o, size->count() > 0); });

@@ -13,5 +13,6 @@ void AddCriCommand(CLI::App& app);
 void AddConfigCommand(CLI::App& app);
 void AddLutCommand(CLI::App& app);
 void AddApplyCommand(CLI::App& app);
+void AddPackageCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddConfigCommand(app);
     bandlight::cli::AddLutCommand(app);
     bandlight::cli::AddApplyCommand(app);
+    bandlight::cli::AddPackageCommand(app);
     try
     {
         app.parse(argc, argv);

@@ -10,9 +10,9 @@
 #include <random>
 #include <sstream>
 
-#include <catch2/catch.hpp>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
+#include <catch2/catch.hpp>
 
 using Catch::Matchers::Contains;
 
@@ -52,7 +52,10 @@ Result Sh(const std::string& cmd)
     return r;
 }
 
-Result Bandlight(const std::string& args) { return Sh(std::string("'") + BANDLIGHT_EXE + "' " + args); }
+Result Bandlight(const std::string& args)
+{
+    return Sh(std::string("'") + BANDLIGHT_EXE + "' " + args);
+}
 
 bool Exists(const std::string& path)
 {
@@ -104,8 +107,8 @@ double WorstRelative(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, int c0, i
     {
         for (int c = c0; c < c1; ++c)
         {
-            worst = std::max(worst, double(std::abs(pa[c] - pb[c])) /
-                                        std::max(1.0, double(std::abs(pb[c]))));
+            worst = std::max(
+                worst, double(std::abs(pa[c] - pb[c])) / std::max(1.0, double(std::abs(pb[c]))));
         }
     }
     return worst;
@@ -113,9 +116,11 @@ double WorstRelative(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, int c0, i
 
 std::string ConfigDir()
 {
-    static const std::string dir = [] {
+    static const std::string dir = []
+    {
         const std::string d = Temp("config");
-        const Result r = Bandlight("config --out '" + d + "' --methods none,bradford,band3,band3-wp,band5");
+        const Result r =
+            Bandlight("config --out '" + d + "' --methods none,bradford,band3,band3-wp,band5");
         REQUIRE(r.code == 0);
         return d;
     }();
@@ -156,8 +161,8 @@ TEST_CASE("apply gives oiiotool's pixels for the same look and config", "[cli][o
 {
     const std::string in = Temp("plate.exr");
     WriteTestImage(in);
-    for (const char* look : {"band3_A_to_D65", "bradford_F11_to_D65", "band3-wp_D65_to_F2",
-                             "band5_C_to_A"})
+    for (const char* look :
+         {"band3_A_to_D65", "bradford_F11_to_D65", "band3-wp_D65_to_F2", "band5_C_to_A"})
     {
         const std::string ours = Temp(std::string("ours_") + look + ".exr");
         const std::string theirs = Temp(std::string("oiiotool_") + look + ".exr");
@@ -165,9 +170,9 @@ TEST_CASE("apply gives oiiotool's pixels for the same look and config", "[cli][o
                                    " --config '" + ConfigDir() + "'");
         INFO(a.err);
         REQUIRE(a.code == 0);
-        const Result b = Sh("oiiotool '" + in + "' --colorconfig '" + ConfigDir() +
-                            "/config.ocio' --ociolook:from=ACEScg:to=ACEScg " + look + " -o '" +
-                            theirs + "'");
+        const Result b =
+            Sh("oiiotool '" + in + "' --colorconfig '" + ConfigDir() +
+               "/config.ocio' --ociolook:from=ACEScg:to=ACEScg " + look + " -o '" + theirs + "'");
         INFO(b.err);
         REQUIRE(b.code == 0);
         const OIIO::ImageBuf mine = Read(ours), ref = Read(theirs), orig = Read(in);
@@ -185,7 +190,8 @@ TEST_CASE("apply without a config is the same as the config's look", "[cli][oiio
     const std::string in = Temp("plate2.exr");
     WriteTestImage(in, 32, 16, 2);
     const std::string a = Temp("direct.exr"), b = Temp("vialook.exr");
-    REQUIRE(Bandlight("apply '" + in + "' '" + a + "' --from F11 --to D65 --method band3").code == 0);
+    REQUIRE(Bandlight("apply '" + in + "' '" + a + "' --from F11 --to D65 --method band3").code ==
+            0);
     REQUIRE(Bandlight("apply '" + in + "' '" + b + "' --look band3_F11_to_D65 --config '" +
                       ConfigDir() + "'")
                 .code == 0);
@@ -205,8 +211,9 @@ TEST_CASE("apply runs over a frame range for farm splits", "[cli][oiio]")
     CHECK_FALSE(Exists(Temp("relit.1001.exr")));
     CHECK(Exists(Temp("relit.1002.exr")));
     CHECK(Exists(Temp("relit.1003.exr")));
-    const Result missing = Bandlight("apply '" + Temp("seq.####.exr") + "' '" +
-                                     Temp("relit.####.exr") + "' --from A --to D65 --frames 1003-1004");
+    const Result missing =
+        Bandlight("apply '" + Temp("seq.####.exr") + "' '" + Temp("relit.####.exr") +
+                  "' --from A --to D65 --frames 1003-1004");
     CHECK(missing.code == 2);
     CHECK_THAT(missing.err, Contains("seq.1004.exr: cannot read image"));
 }
@@ -243,20 +250,26 @@ TEST_CASE("Bad input: one line, exit code 2, nothing half-written", "[cli]")
     };
     const std::vector<Case> cases = {
         {"apply '" + in + "' '" + out + "' --from Candle --to D65", "unknown illuminant 'Candle'"},
-        {"apply '" + in + "' '" + out + "' --from A --to D65 --method magic", "unknown method 'magic'"},
-        {"apply '" + Temp("nope.exr") + "' '" + out + "' --from A --to D65", "nope.exr: cannot read image"},
+        {"apply '" + in + "' '" + out + "' --from A --to D65 --method magic",
+         "unknown method 'magic'"},
+        {"apply '" + Temp("nope.exr") + "' '" + out + "' --from A --to D65",
+         "nope.exr: cannot read image"},
         {"apply '" + in + "' '" + out + "' --look sepia --config '" + ConfigDir() + "'",
          "look 'sepia' is not in"},
         {"apply '" + in + "' '" + out + "' --look band3_A_to_D65 --config /nonexistent",
          "/nonexistent/config.ocio: cannot read config"},
         {"apply '" + in + "' '" + Temp("out.unknownformat") + "' --from A --to D65",
          "no image writer"},
-        {"config --out '" + Temp("cfg_bad") + "' --illuminants A,Candle", "unknown illuminant 'Candle'"},
-        {"config --out '" + Temp("cfg_bad") + "' --methods bradford,magic", "unknown method 'magic'"},
-        {"config --out '" + Temp("cfg_bad") + "' --base /nonexistent.ocio", "/nonexistent.ocio: cannot read the base config"},
+        {"config --out '" + Temp("cfg_bad") + "' --illuminants A,Candle",
+         "unknown illuminant 'Candle'"},
+        {"config --out '" + Temp("cfg_bad") + "' --methods bradford,magic",
+         "unknown method 'magic'"},
+        {"config --out '" + Temp("cfg_bad") + "' --base /nonexistent.ocio",
+         "/nonexistent.ocio: cannot read the base config"},
         {"config --out '" + Temp("cfg_bad") + "' --base '" + ConfigDir() + "/config.ocio'",
          "clashes with a look"},
-        {"lut --from A --to D65 --format icc -o '" + Temp("x.icc") + "'", "unknown LUT format 'icc'"},
+        {"lut --from A --to D65 --format icc -o '" + Temp("x.icc") + "'",
+         "unknown LUT format 'icc'"},
     };
     for (const Case& c : cases)
     {

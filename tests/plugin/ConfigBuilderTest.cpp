@@ -22,7 +22,10 @@ ConfigOptions Options(const std::string& space)
     return o;
 }
 
-Light L(const std::string& name) { return {name, BuiltinIlluminant(name)}; }
+Light L(const std::string& name)
+{
+    return {name, BuiltinIlluminant(name)};
+}
 
 /// The 3×3 the config applies for a look, measured through its processor.
 Mat3 LookMatrix(const OCIO::ConstConfigRcPtr& config, const std::string& look,
@@ -48,19 +51,21 @@ TEST_CASE("Every look of a built config is the library's matrix", "[plugin]")
         const RgbSpace& ws = FindRgbSpace(space);
         for (const std::string& method : o.methods)
         {
-            for (const auto& [from, to] :
-                 {std::pair{"A", "D65"}, std::pair{"F11", "D65"}, std::pair{"D65", "F2"},
-                  std::pair{"C", "A"}})
+            for (const auto& [from, to] : {std::pair{"A", "D65"}, std::pair{"F11", "D65"},
+                                           std::pair{"D65", "F2"}, std::pair{"C", "A"}})
             {
                 const std::string name = LookName(method, from, to);
                 INFO(space << " " << name);
-                const Mat3 expected = IlluminantChangeMatrix(L(from), L(to), ParseMethod(method), ws);
+                const Mat3 expected =
+                    IlluminantChangeMatrix(L(from), L(to), ParseMethod(method), ws);
                 const Mat3 viaLook = LookMatrix(config, name, OCIO::ROLE_SCENE_LINEAR);
-                CHECK((viaLook - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
-                const Mat3 viaNamed = MeasureMatrix(config->getProcessor(
-                    config->getNamedTransform(NamedTransformName(name).c_str())
-                        ->getTransform(OCIO::TRANSFORM_DIR_FORWARD)));
-                CHECK((viaNamed - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
+                CHECK((viaLook - expected).cwiseAbs().maxCoeff() <
+                      1e-6 * expected.cwiseAbs().maxCoeff());
+                const Mat3 viaNamed = MeasureMatrix(
+                    config->getProcessor(config->getNamedTransform(NamedTransformName(name).c_str())
+                                             ->getTransform(OCIO::TRANSFORM_DIR_FORWARD)));
+                CHECK((viaNamed - expected).cwiseAbs().maxCoeff() <
+                      1e-6 * expected.cwiseAbs().maxCoeff());
                 CHECK_THAT(config->getLook(name.c_str())->getDescription(), Contains(from));
             }
         }
@@ -71,9 +76,9 @@ TEST_CASE("A built config has the roles, spaces and views hosts ask for", "[plug
 {
     const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg"));
     for (const char* role :
-         {"scene_linear", "data", "color_picking", "texture_paint", "default_byte",
-          "default_float", "default_sequencer", "reference", "aces_interchange",
-          "cie_xyz_d65_interchange", "default", "rendering", "color_timing", "matte_paint"})
+         {"scene_linear", "data", "color_picking", "texture_paint", "default_byte", "default_float",
+          "default_sequencer", "reference", "aces_interchange", "cie_xyz_d65_interchange",
+          "default", "rendering", "color_timing", "matte_paint"})
     {
         INFO(role);
         CHECK(config->hasRole(role));
@@ -122,7 +127,8 @@ TEST_CASE("The band space converts working RGB to the lecture's bands", "[plugin
 {
     const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg"));
     const Mat3 m = MeasureMatrix(config->getProcessor("ACEScg", "Bands VB-VG-VR (lecture)"));
-    const Eigen::MatrixXd expected = WorkingToBandMatrix(BandSet::Lecture(), FindRgbSpace("acescg"));
+    const Eigen::MatrixXd expected =
+        WorkingToBandMatrix(BandSet::Lecture(), FindRgbSpace("acescg"));
     CHECK((m - expected).cwiseAbs().maxCoeff() < 1e-5);
 }
 
@@ -147,8 +153,8 @@ TEST_CASE("Extending a base config keeps it and identifies its scene_linear", "[
     {
         CHECK(ext->getColorSpace(base->getColorSpaceNameByIndex(i)));
     }
-    const Mat3 expected = IlluminantChangeMatrix(L("D50"), L("D75"), ParseMethod("band3"),
-                                                 FindRgbSpace("rec709"));
+    const Mat3 expected =
+        IlluminantChangeMatrix(L("D50"), L("D75"), ParseMethod("band3"), FindRgbSpace("rec709"));
     const Mat3 got = LookMatrix(ext, "band3_D50_to_D75", "Linear Rec.709 (sRGB)");
     CHECK((got - expected).cwiseAbs().maxCoeff() < 1e-6);
 }

@@ -13,7 +13,10 @@ using Catch::Matchers::Contains;
 
 namespace
 {
-Light L(const char* name) { return {name, BuiltinIlluminant(name)}; }
+Light L(const char* name)
+{
+    return {name, BuiltinIlluminant(name)};
+}
 
 /// White of a light in working RGB, Y = 1.
 Vec3 WhiteRgb(const Light& l, const RgbSpace& space)
@@ -70,8 +73,7 @@ TEST_CASE("band3 and band3-wp agree when the lights are the same", "[transforms]
     const RgbSpace& ws = FindRgbSpace("acescg");
     for (const char* method : {"none", "vonkries", "bradford", "band3", "band3-wp", "band10"})
     {
-        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), ParseMethod(method), ws)
-                  .isIdentity(1e-12));
+        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), ParseMethod(method), ws).isIdentity(1e-12));
     }
 }
 
@@ -98,9 +100,9 @@ TEST_CASE("An illuminant with an empty band gives a clear error", "[transforms]"
         v[i] = 1.0;  // 530–675 nm
     }
     const Light green{"G", Spectrum(380.0, 5.0, v)};
-    CHECK_THROWS_WITH(IlluminantChangeMatrix(green, L("D65"), ParseMethod("band3"),
-                                             FindRgbSpace("acescg")),
-                      Contains("illuminant G has no power in band VB"));
+    CHECK_THROWS_WITH(
+        IlluminantChangeMatrix(green, L("D65"), ParseMethod("band3"), FindRgbSpace("acescg")),
+        Contains("illuminant G has no power in band VB"));
 }
 
 TEST_CASE("Material tint is the identity for a white remittance", "[transforms]")

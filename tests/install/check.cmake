@@ -1,0 +1,22 @@
+# cmake -P script: install bandlight into WORK_DIR/prefix, configure and build
+# the host project against it, run the host.
+file(REMOVE_RECURSE "${WORK_DIR}")
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix"
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+    message(FATAL_ERROR "cmake --install failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/build"
+                        "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
+                RESULT_VARIABLE rc)
+if(rc)
+    message(FATAL_ERROR "configuring the host with find_package(bandlight) failed")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK_DIR}/build" RESULT_VARIABLE rc)
+if(rc)
+    message(FATAL_ERROR "building the host failed")
+endif()
+execute_process(COMMAND "${WORK_DIR}/build/host" RESULT_VARIABLE rc)
+if(rc)
+    message(FATAL_ERROR "the host ran but gave the wrong answer")
+endif()
