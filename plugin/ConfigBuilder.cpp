@@ -374,6 +374,27 @@ OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions
     }
 
     OCIO::ConfigRcPtr config = base->createEditableCopy();
+    // The extended config is written elsewhere: anchor the base's relative
+    // search paths (its LUT folders) at the base's own directory.
+    const std::string baseDir = base->getWorkingDir();
+    if (!baseDir.empty())
+    {
+        std::vector<std::string> paths;
+        for (int i = 0; i < base->getNumSearchPaths(); ++i)
+        {
+            std::string p = base->getSearchPath(i);
+            if (!p.empty() && p[0] != '/' && p[0] != '$')
+            {
+                p = baseDir + "/" + p;
+            }
+            paths.push_back(p);
+        }
+        config->clearSearchPaths();
+        for (const std::string& p : paths)
+        {
+            config->addSearchPath(p.c_str());
+        }
+    }
     if (!config->getColorSpace(kBandSpaceName))  // a bandlight config has it already
     {
         AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));

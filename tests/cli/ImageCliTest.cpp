@@ -137,12 +137,26 @@ TEST_CASE("ociocheck passes on every generated config", "[cli][ocio]")
         std::string name;
         std::string args;
     };
-    const std::vector<Case> cases = {
+    std::vector<Case> cases = {
         {"default", ""},
         {"rec709", "--working-space lin-rec709 --illuminants A,D50,D65,F7"},
         {"rec2020-10deg", "--working-space rec2020 --observer 1964 --methods cat02,band8-wp"},
         {"extended", "--base '" + base + "/config.ocio' --illuminants D50,D75,F12"},
     };
+    // Blender's own config, when Blender's data are installed (Debian's
+    // blender-data): its scene_linear (Linear Rec.709) is found through its
+    // aces_interchange role and its LUT folders stay reachable.
+    for (const char* blender : {"/usr/share/blender/datafiles/colormanagement/config.ocio"})
+    {
+        if (Exists(blender))
+        {
+            cases.push_back({"blender", std::string("--base '") + blender + "'"});
+        }
+        else
+        {
+            WARN("Blender's config is not installed (" << blender << "): not extended here");
+        }
+    }
     for (const Case& c : cases)
     {
         const std::string dir = Temp("check_" + c.name);
