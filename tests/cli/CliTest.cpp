@@ -139,7 +139,7 @@ TEST_CASE("Bad input: one line on stderr and exit code 2", "[cli]")
 
 TEST_CASE("--help works on every command", "[cli]")
 {
-    for (const char* cmd : {"", "tables ", "xyz ", "cri "})
+    for (const char* cmd : {"", "tables ", "xyz ", "cri ", "config ", "lut ", "apply ", "package "})
     {
         const Result r = Run(std::string(cmd) + "--help");
         INFO(cmd);
