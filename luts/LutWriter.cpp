@@ -52,33 +52,37 @@ void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const 
         { group->write(raw, format == LutFormat::CTF ? kCtfFormat : kClfFormat, os); });
 }
 
-/// A config holding the lattice's input and output spaces for OCIO's Baker:
-/// "lut_in" is the shaper-encoded linear space, "lut_out" the result of the
-/// exact transform (shaper-encoded again when `encodeOutput`).
-OCIO::ConfigRcPtr BakerConfig(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
-                              bool encodeOutput)
+/// A config for OCIO's Baker: "lut_in" is the lattice's (encoded) input,
+/// "lut_out" the lattice applied to it, so the Baker resamples the lattice
+/// at its own nodes (the same nodes: the values pass through unchanged).
+OCIO::ConfigRcPtr BakerConfig(const OCIO::Lut3DTransformRcPtr& lut)
 {
     OCIO::ConfigRcPtr config = OCIO::Config::CreateRaw()->createEditableCopy();
     OCIO::ColorSpaceRcPtr in = OCIO::ColorSpace::Create();
     in->setName("lut_in");
-    if (OCIO::TransformRcPtr s = shaper.transform())
-    {
-        in->setTransform(s, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
-    }
     config->addColorSpace(in);
     OCIO::ColorSpaceRcPtr out = OCIO::ColorSpace::Create();
     out->setName("lut_out");
-    OCIO::GroupTransformRcPtr g = AsGroup(exact);
-    if (encodeOutput)
-    {
-        if (OCIO::TransformRcPtr s = shaper.transform())
-        {
-            g->appendTransform(s);
-        }
-    }
-    out->setTransform(g, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
+    out->setTransform(lut, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
     config->addColorSpace(out);
     return config;
+}
+
+/// Copies a red-fastest lattice into a Lut3DTransform.
+void SetLattice(OCIO::Lut3DTransform& lut, const std::vector<float>& lattice, int size)
+{
+    for (int b = 0; b < size; ++b)
+    {
+        for (int g = 0; g < size; ++g)
+        {
+            for (int r = 0; r < size; ++r)
+            {
+                const size_t i = (size_t(b) * size_t(size) + size_t(g)) * size_t(size) + size_t(r);
+                lut.setValue(unsigned(r), unsigned(g), unsigned(b), lattice[3 * i],
+                             lattice[3 * i + 1], lattice[3 * i + 2]);
+            }
+        }
+    }
 }
 
 void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& path)
@@ -162,8 +166,19 @@ const char* LutExtension(LutFormat format)
     return "";
 }
 
-std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
-                               int size, bool encodeOutput)
+PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact)
+{
+    OCIO::ConstCPUProcessorRcPtr cpu =
+        OCIO::Config::CreateRaw()->getProcessor(exact)->getOptimizedCPUProcessor(
+            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+    return [cpu](float* rgb, size_t count) {
+        OCIO::PackedImageDesc desc(rgb, long(count), 1, 3);
+        cpu->apply(desc);
+    };
+}
+
+std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& shaper, int size,
+                               bool encodeOutput)
 {
     if (size < 2 || size > 129)
     {
@@ -180,26 +195,32 @@ std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const Sha
         rgb[3 * i + 1] = float(double(g) / double(size - 1));
         rgb[3 * i + 2] = float(double(b) / double(size - 1));
     }
-    OCIO::GroupTransformRcPtr chain = OCIO::GroupTransform::Create();
+    // Nodes → linear through OCIO's own shaper, so the lattice matches the
+    // shaper the LUT file is applied with, bit for bit.
     if (OCIO::TransformRcPtr s = shaper.transform())
     {
         s->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
-        chain->appendTransform(s);
+        Apply(s, rgb);
     }
-    chain->appendTransform(exact->createEditableCopy());
+    exact(rgb.data(), n);
     if (encodeOutput)
     {
         if (OCIO::TransformRcPtr s = shaper.transform())
         {
-            chain->appendTransform(s);
+            Apply(s, rgb);
         }
     }
-    Apply(chain, rgb);
     return rgb;
 }
 
 OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
                                            const ShaperSpec& shaper, int size)
+{
+    return LatticeTransform(PixelFunctionOf(exact), shaper, size);
+}
+
+OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const ShaperSpec& shaper,
+                                           int size)
 {
     // Shaper-encoded out as well as in: along any ray from black the exact
     // transform is then linear in the LUT's coordinates in the log segment
@@ -209,18 +230,7 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
     OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(size));
     lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
     lut->setFileOutputBitDepth(OCIO::BIT_DEPTH_F32);
-    for (int b = 0; b < size; ++b)
-    {
-        for (int g = 0; g < size; ++g)
-        {
-            for (int r = 0; r < size; ++r)
-            {
-                const size_t i = (size_t(b) * size_t(size) + size_t(g)) * size_t(size) + size_t(r);
-                lut->setValue(unsigned(r), unsigned(g), unsigned(b), lattice[3 * i],
-                              lattice[3 * i + 1], lattice[3 * i + 2]);
-            }
-        }
-    }
+    SetLattice(*lut, lattice, size);
     OCIO::GroupTransformRcPtr group = OCIO::GroupTransform::Create();
     if (OCIO::TransformRcPtr s = shaper.transform())
     {
@@ -238,31 +248,58 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& o,
                   const std::string& path)
 {
+    if ((o.format == LutFormat::CLF || o.format == LutFormat::CTF) && isMatrix && !o.forceLattice)
+    {
+        LutFiles files;
+        files.lut = path;
+        WriteGroup(AsGroup(exact), o.format, path, o.description);
+        return files;
+    }
+    LutOptions withDescription = o;
+    if (withDescription.description.empty())
+    {
+        if (auto g = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(exact))
+        {
+            const OCIO::FormatMetadata& md = g->getFormatMetadata();
+            for (int i = 0; i < md.getNumChildrenElements(); ++i)
+            {
+                if (std::string(md.getChildElement(i).getElementName()) ==
+                    OCIO::METADATA_DESCRIPTION)
+                {
+                    withDescription.description = md.getChildElement(i).getElementValue();
+                }
+            }
+        }
+    }
+    return WriteLut(PixelFunctionOf(exact), withDescription, path);
+}
+
+LutFiles WriteLut(const PixelFunction& exact, const LutOptions& o, const std::string& path)
+{
     LutFiles files;
     files.lut = path;
+    files.lattice = true;
     if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
     {
-        if (isMatrix && !o.forceLattice)
-        {
-            WriteGroup(AsGroup(exact), o.format, path, o.description);
-            return files;
-        }
-        files.lattice = true;
         WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description);
         return files;
     }
-
-    files.lattice = true;
     files.outputEncoded = o.shaper.kind != ShaperSpec::Kind::NONE;
     // Bake into memory first, so a failure leaves no file behind.
+    const std::vector<float> lattice = BakeLattice(exact, o.shaper, o.size, files.outputEncoded);
     if (o.format == LutFormat::SPI3D)
     {
-        WriteSpi3d(BakeLattice(exact, o.shaper, o.size, files.outputEncoded), o.size, path);
+        WriteSpi3d(lattice, o.size, path);
     }
     else
     {
+        // OCIO's Baker samples a config's processor: give it the lattice as a
+        // Lut3D from the (shaper-encoded) input space to the output space.
+        OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
+        lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+        SetLattice(*lut, lattice, o.size);
         OCIO::BakerRcPtr baker = OCIO::Baker::Create();
-        baker->setConfig(BakerConfig(exact, o.shaper, files.outputEncoded));
+        baker->setConfig(BakerConfig(lut));
         baker->setFormat(o.format == LutFormat::CUBE ? "iridas_cube" : "flame");
         baker->setInputSpace("lut_in");
         baker->setTargetSpace("lut_out");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,14 +44,23 @@ struct LutFiles
     bool outputEncoded = false;  ///< the 3D LUT's output is shaper-encoded: apply the inverse after
 };
 
+/// A transform given as a function on interleaved linear RGB float triples
+/// (in place), for transforms that are not OCIO ops (spectral upsampling).
+using PixelFunction = std::function<void(float* rgb, size_t count)>;
+
+/// The same as an OCIO transform applied on the CPU.
+PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact);
+
 /// The exact transform sampled on a size³ lattice over the shaper's domain:
 /// node (r, g, b) holds exact(decode(node)) — or its shaper encoding when
 /// `encodeOutput` — red varying fastest, three floats per node.
-std::vector<float> BakeLattice(const OCIO::ConstTransformRcPtr& exact, const ShaperSpec& shaper,
-                               int size, bool encodeOutput);
+std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& shaper, int size,
+                               bool encodeOutput);
 
 /// Shaper, 3D LUT (tetrahedral, shaper-encoded in and out), inverse shaper,
 /// as one OCIO group: the lattice form of `exact` for scene-linear input.
+OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const ShaperSpec& shaper,
+                                           int size);
 OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
                                            const ShaperSpec& shaper, int size);
 
@@ -64,5 +74,9 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
 /// reads it back in the tests.
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& options,
                   const std::string& path);
+
+/// The same for a transform that exists only as a pixel function: always a
+/// lattice (CLF/CTF hold shaper + 3D LUT + inverse shaper).
+LutFiles WriteLut(const PixelFunction& exact, const LutOptions& options, const std::string& path);
 
 }  // namespace bandlight

@@ -27,7 +27,11 @@ AdaptationMethod ParseAdaptationMethod(const std::string& text)
     {
         return AdaptationMethod::CAT02;
     }
-    throw Exception("unknown chromatic adaptation '" + text + "' (vonkries, bradford, cat02)");
+    if (t == "sharp")
+    {
+        return AdaptationMethod::SHARP;
+    }
+    throw Exception("unknown chromatic adaptation '" + text + "' (vonkries, bradford, cat02, sharp)");
 }
 
 Mat3 ConeResponseMatrix(AdaptationMethod method)
@@ -48,6 +52,13 @@ Mat3 ConeResponseMatrix(AdaptationMethod method)
             m <<  0.7328,  0.4296, -0.1624,
                  -0.7036,  1.6975,  0.0061,
                   0.0030,  0.0136,  0.9834;
+            break;
+        case AdaptationMethod::SHARP:
+            // S. Süsstrunk, J. Holm, G. D. Finlayson, "Chromatic adaptation
+            // performance of different RGB sensors", Proc. SPIE 4300 (2001).
+            m <<  1.2694, -0.0988, -0.1706,
+                 -0.8364,  1.8006,  0.0357,
+                  0.0297, -0.0315,  1.0018;
             // clang-format on
             break;
     }

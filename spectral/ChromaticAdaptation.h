@@ -15,9 +15,10 @@ enum class AdaptationMethod
     XYZ_SCALING,  ///< von Kries scaling on XYZ itself
     BRADFORD,     ///< Lam (1985) / Hunt, the linearised Bradford matrix
     CAT02,        ///< CIECAM02 (CIE 159:2004)
+    SHARP,        ///< spectrally sharpened sensors (Süsstrunk, Holm & Finlayson 2001)
 };
 
-/// "vonkries"/"xyz", "bradford", "cat02"; throws Exception otherwise.
+/// "vonkries"/"xyz", "bradford", "cat02", "sharp"; throws Exception otherwise.
 AdaptationMethod ParseAdaptationMethod(const std::string& text);
 
 /// The cone-response matrix of a method (XYZ → LMS).

@@ -12,6 +12,10 @@
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
 #include "transforms/BandModel.h"
+#include "transforms/SpectralMethods.h"
+#include "transforms/Upsampler.h"
+
+#include <thread>
 
 namespace bandlight
 {
@@ -47,9 +51,13 @@ BandBasis MakeBandBasis(const BandSet& bands, Observer observer)
     return out;
 }
 
+/// XYZ (Y = 1) of a light's white as every method sees it: the perfect
+/// reflector rendered on SurfaceRenderer's grid (380–780 nm at 5 nm), so
+/// that white-preserving methods agree with the spectral reference exactly.
 Vec3 WhiteOf(const Light& light, Observer observer)
 {
-    const Vec3 w = IntegrateXyz(light.spectrum, observer);
+    const SurfaceRenderer r(light.spectrum, FindRgbSpace("acescg"), observer);
+    const Vec3 w = r.rgbToXyz() * r.white();
     if (!(w.y() > 0.0) || !w.allFinite())
     {
         throw Exception("illuminant " + light.name + " has no luminance: no white to adapt from");
@@ -80,6 +88,26 @@ MethodSpec ParseMethod(const std::string& name)
     {
         m.method = ChangeMethod::CAT02;
     }
+    else if (n == "fit3x3")
+    {
+        m.method = ChangeMethod::FIT3X3;
+    }
+    else if (n == "prefilter")
+    {
+        m.method = ChangeMethod::PREFILTER;
+    }
+    else if (n == "metamer")
+    {
+        m.method = ChangeMethod::METAMER;
+    }
+    else if (n == "upsample")
+    {
+        m.method = ChangeMethod::UPSAMPLE;
+    }
+    else if (n == "spectral")
+    {
+        m.method = ChangeMethod::SPECTRAL;
+    }
     else if (n.rfind("band", 0) == 0)
     {
         std::string rest = n.substr(4);
@@ -103,7 +131,8 @@ MethodSpec ParseMethod(const std::string& name)
     else
     {
         throw Exception("unknown method '" + name +
-                        "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp)");
+                        "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
+                        "fit3x3, prefilter, metamer, upsample, spectral)");
     }
     return m;
 }
@@ -112,6 +141,14 @@ const std::vector<std::string>& LinearMethodNames()
 {
     static const std::vector<std::string> names = {"none",  "vonkries", "bradford",
                                                    "cat02", "band3",    "band3-wp"};
+    return names;
+}
+
+const std::vector<std::string>& AllMethodNames()
+{
+    static const std::vector<std::string> names = {
+        "none",     "vonkries", "bradford",  "cat02",   "band3",   "band3-wp",
+        "band6",    "band6-wp", "fit3x3",    "prefilter", "metamer", "upsample"};
     return names;
 }
 
@@ -147,6 +184,21 @@ std::string DescribeMethod(const MethodSpec& m)
                  "a diagonal in band space for colours.";
             return s.str();
         }
+        case ChangeMethod::FIT3X3:
+            return "3x3 fitted by least squares on training remittances (TCS01-08 and 100 "
+                   "smooth random ones), exact on white.";
+        case ChangeMethod::PREFILTER:
+            return "von Kries in the sharpened primaries of spectral prefiltering (Ward & "
+                   "Eydelberg-Vileshin 2002, Sharp sensors): exact on white.";
+        case ChangeMethod::METAMER:
+            return "The smoothest remittance that reproduces the pixel under the first light, "
+                   "re-lit under the second: one 3x3, exact on white.";
+        case ChangeMethod::UPSAMPLE:
+            return "A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika 2019 "
+                   "sigmoid polynomial), re-lit spectrally: not linear, baked into a 3D LUT with a "
+                   "log2 shaper.";
+        case ChangeMethod::SPECTRAL:
+            return "The exact spectral answer for known remittances: the reference.";
     }
     return {};
 }
@@ -200,6 +252,26 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
         case ChangeMethod::BAND:
         case ChangeMethod::BAND_WP:
             break;
+        case ChangeMethod::PREFILTER:
+            return mInv *
+                   AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer),
+                                    AdaptationMethod::SHARP) *
+                   m;
+        case ChangeMethod::FIT3X3:
+        {
+            const SurfaceRenderer r1(from.spectrum, working, observer);
+            const SurfaceRenderer r2(to.spectrum, working, observer);
+            return FitMatrix(r1, r2, method.training.empty() ? TrainingSet().samples
+                                                             : method.training);
+        }
+        case ChangeMethod::METAMER:
+            return MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
+                                 SurfaceRenderer(to.spectrum, working, observer));
+        case ChangeMethod::UPSAMPLE:
+        case ChangeMethod::SPECTRAL:
+            throw Exception("method '" + method.name +
+                            "' is not one 3x3 matrix: apply it through a Relighter (upsample) or "
+                            "to spectra (spectral)");
     }
     const BandSet& bands = method.bands;
     const BandBasis basis = MakeBandBasis(bands, observer);
@@ -242,6 +314,92 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
         }
     }
     return mInv * basis.b * ratio.asDiagonal() * basis.pinv * m;
+}
+
+struct Relighter::Spectral
+{
+    SurfaceRenderer from;
+    SurfaceRenderer to;
+    Upsampler upsampler;
+
+    Spectral(const SurfaceRenderer& f, const SurfaceRenderer& t) : from(f), to(t), upsampler(from)
+    {
+    }
+};
+
+Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& method,
+                     const RgbSpace& working, Observer observer)
+{
+    if (method.method == ChangeMethod::SPECTRAL)
+    {
+        throw Exception("method 'spectral' needs the spectra of the surfaces: it is the "
+                        "reference `bandlight accuracy` measures against, not an image transform");
+    }
+    if (method.isLinear())
+    {
+        m_matrix = IlluminantChangeMatrix(from, to, method, working, observer);
+        return;
+    }
+    m_linear = false;
+    const SurfaceRenderer r1(from.spectrum, working, observer);
+    const SurfaceRenderer r2(to.spectrum, working, observer);
+    m_matrix = MetamerMatrix(r1, r2);
+    m_spectral = std::make_unique<Spectral>(r1, r2);
+}
+
+Relighter::~Relighter() = default;
+Relighter::Relighter(Relighter&&) noexcept = default;
+
+Vec3 Relighter::apply(const Vec3& rgb) const
+{
+    if (m_linear)
+    {
+        return m_matrix * rgb;
+    }
+    return UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, rgb);
+}
+
+void Relighter::apply(float* rgb, size_t count, int threads) const
+{
+    auto run = [&](size_t begin, size_t end) {
+        Upsampler::Coeffs warm = Upsampler::Coeffs::Zero();
+        for (size_t i = begin; i < end; ++i)
+        {
+            float* p = rgb + 3 * i;
+            const Vec3 in(p[0], p[1], p[2]);
+            const Vec3 out =
+                m_linear ? Vec3(m_matrix * in)
+                         : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in,
+                                           &warm);
+            p[0] = float(out.x());
+            p[1] = float(out.y());
+            p[2] = float(out.z());
+        }
+    };
+    if (threads <= 0)
+    {
+        threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    }
+    if (threads == 1 || count < 1024)
+    {
+        run(0, count);
+        return;
+    }
+    std::vector<std::thread> pool;
+    const size_t chunk = (count + size_t(threads) - 1) / size_t(threads);
+    for (int t = 0; t < threads; ++t)
+    {
+        const size_t b = chunk * size_t(t);
+        const size_t e = std::min(count, b + chunk);
+        if (b < e)
+        {
+            pool.emplace_back(run, b, e);
+        }
+    }
+    for (std::thread& th : pool)
+    {
+        th.join();
+    }
 }
 
 }  // namespace bandlight

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "spectral/CieData.h"
+#include "spectral/SpectrumIO.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/RgbSpaces.h"
 #include "spectral/Spectrum.h"
@@ -22,20 +24,33 @@ enum class ChangeMethod
     CAT02,      ///< CIECAM02 chromatic adaptation
     BAND,       ///< the lecture's band model: band ratios of the two lights
     BAND_WP,    ///< band model whose ratios come from the two whites: exact on white
+    FIT3X3,     ///< least-squares 3×3 on training remittances, white-preserving
+    PREFILTER,  ///< von Kries in sharpened primaries (Ward & Eydelberg-Vileshin 2002)
+    METAMER,    ///< smoothest remittance reproducing the pixel under S1, re-lit
+    UPSAMPLE,   ///< sigmoid-polynomial remittance (Jakob & Hanika 2019), re-lit: not linear
+    SPECTRAL,   ///< the exact answer for known spectra: the reference, not an image transform
 };
 
 /// A method with its parameters, parsed from its name: "none", "vonkries",
 /// "bradford", "cat02", "band3" (the lecture's VB/VG/VR), "band3-wp",
-/// "bandN" / "bandN-wp" (N equal bands over 400–700 nm).
+/// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), "fit3x3",
+/// "prefilter", "metamer", "upsample", "spectral".
 struct MethodSpec
 {
     ChangeMethod method = ChangeMethod::NONE;
     BandSet bands = BandSet::Lecture();
     std::string name;  ///< canonical name, used in look names: "band3-wp"
+    /// fit3x3's training remittances (empty: TrainingSet()).
+    std::vector<NamedSpectrum> training;
 
     bool usesBands() const noexcept
     {
         return method == ChangeMethod::BAND || method == ChangeMethod::BAND_WP;
+    }
+    /// One 3×3 in the working space (everything but upsample and spectral).
+    bool isLinear() const noexcept
+    {
+        return method != ChangeMethod::UPSAMPLE && method != ChangeMethod::SPECTRAL;
     }
 };
 
@@ -45,6 +60,10 @@ MethodSpec ParseMethod(const std::string& name);
 /// The linear methods a config gets by default: none, vonkries, bradford,
 /// cat02, band3, band3-wp.
 const std::vector<std::string>& LinearMethodNames();
+
+/// Every image method compared by `bandlight accuracy`: the linear ones,
+/// band6, band6-wp, fit3x3, prefilter, metamer and upsample.
+const std::vector<std::string>& AllMethodNames();
 
 /// One sentence on what a method does and how accurate it is, for look
 /// descriptions and --help.
@@ -65,9 +84,39 @@ struct Light
 /// exactly; for the plain band model the diagonal is scaled so that the
 /// band model's white keeps its luminance. Throws Exception when an
 /// illuminant has no power in a band, or a band coordinate of a white is
-/// not positive (band-wp).
+/// not positive (band-wp), and for the methods that are not one 3×3
+/// (upsample, spectral: see Relighter).
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
                             const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
+
+/// An illuminant change ready to apply to pixels: a 3×3 for the linear
+/// methods, the per-pixel spectral fit for upsample.
+class Relighter
+{
+public:
+    /// Throws Exception for `spectral` (it needs spectra, not pixels).
+    Relighter(const Light& from, const Light& to, const MethodSpec& method,
+              const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
+    ~Relighter();
+    Relighter(Relighter&&) noexcept;
+
+    bool isLinear() const noexcept { return m_linear; }
+    /// The 3×3 of a linear method; for upsample, the linear fallback used
+    /// for pixels with no positive channel (the metamer matrix).
+    const Mat3& matrix() const noexcept { return m_matrix; }
+
+    /// One pixel, working RGB under `from` → as if under `to`.
+    Vec3 apply(const Vec3& rgb) const;
+    /// `count` interleaved RGB float triples in place, on `threads` threads
+    /// (0: all cores), neighbours warm-starting each other's fits.
+    void apply(float* rgb, size_t count, int threads = 0) const;
+
+private:
+    struct Spectral;
+    bool m_linear = true;
+    Mat3 m_matrix = Mat3::Identity();
+    std::unique_ptr<Spectral> m_spectral;
+};
 
 /// Working RGB → band values (N × 3): the band-space conversion, B⁺ · M.
 Eigen::MatrixXd WorkingToBandMatrix(const BandSet& bands, const RgbSpace& working,

@@ -7,6 +7,7 @@
 #include "spectral/Illuminants.h"
 #include "transforms/BandModel.h"
 #include "transforms/IlluminantChange.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;
@@ -18,11 +19,10 @@ Light L(const char* name)
     return {name, BuiltinIlluminant(name)};
 }
 
-/// White of a light in working RGB, Y = 1.
+/// White of a light in working RGB, Y = 1, as the spectral reference renders it.
 Vec3 WhiteRgb(const Light& l, const RgbSpace& space)
 {
-    const Vec3 w = IntegrateXyz(l.spectrum, Observer::CIE1931_2DEG);
-    return RgbToXyzMatrix(space.chromaticities).inverse() * (w / w.y());
+    return SurfaceRenderer(l.spectrum, space).white();
 }
 }  // namespace
 
