@@ -363,6 +363,7 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
 {
     auto run = [&](size_t begin, size_t end) {
         Upsampler::Coeffs warm = Upsampler::Coeffs::Zero();
+        UpsampleCache cache;
         for (size_t i = begin; i < end; ++i)
         {
             float* p = rgb + 3 * i;
@@ -370,7 +371,7 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
             const Vec3 out =
                 m_linear ? Vec3(m_matrix * in)
                          : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in,
-                                           &warm);
+                                           &warm, &cache);
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());

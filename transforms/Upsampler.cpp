@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "transforms/Upsampler.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
@@ -74,7 +75,11 @@ Upsampler::Fit Upsampler::fit(const Vec3& rgb, const Coeffs& start) const
     Vec3 res;
     Mat3 jac;
     double err = evaluate(f.coeffs, res, &jac);
-    for (f.iterations = 0; f.iterations < 100 && err > 1e-14; ++f.iterations)
+    // 1e-11 on the squared residual relative to the white is ΔE76 ~ 1e-3.
+    // A colour outside the gamut cannot get there: stop when three accepted
+    // steps in a row gain less than 1 % each, or no step gains at all.
+    int stalls = 0;
+    for (f.iterations = 0; f.iterations < 60 && err > 1e-11 && stalls < 3; ++f.iterations)
     {
         const Mat3 jtj = jac.transpose() * jac;
         const Vec3 g = jac.transpose() * res;
@@ -86,20 +91,17 @@ Upsampler::Fit Upsampler::fit(const Vec3& rgb, const Coeffs& start) const
         const double trialErr = evaluate(trial, trialRes, nullptr);
         if (trialErr < err)
         {
+            stalls = trialErr > 0.99 * err ? stalls + 1 : 0;
             f.coeffs = trial;
             err = evaluate(f.coeffs, res, &jac);
             mu = std::max(mu * 0.3, 1e-9);
-            if (step.norm() < 1e-10)
-            {
-                break;
-            }
         }
         else
         {
             mu *= 10.0;
-            if (mu > 1e10)
+            if (mu > 1e6)
             {
-                break;  // no further descent: the nearest reachable remittance
+                break;  // no step lowers the residual: the nearest reachable remittance
             }
         }
     }
@@ -107,20 +109,47 @@ Upsampler::Fit Upsampler::fit(const Vec3& rgb, const Coeffs& start) const
     return f;
 }
 
+namespace
+{
+/// The cache key of a colour scaled onto the gamut's shell: each channel
+/// relative to the white, quantised to 2^-20 and packed into 21 bits.
+uint64_t ShellKey(const Vec3& scaled, const Vec3& white)
+{
+    uint64_t key = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+        const double q = std::clamp(scaled(c) / white(c), -1.0, 1.0);
+        key = (key << 21) | uint64_t(std::llround((q + 1.0) * double(1 << 19)) & 0x1fffff);
+    }
+    return key;
+}
+}  // namespace
+
 Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3& fallback,
-                     const Vec3& rgb, Upsampler::Coeffs* warm)
+                     const Vec3& rgb, Upsampler::Coeffs* warm, UpsampleCache* cache)
 {
     if (!rgb.allFinite() || !(rgb.maxCoeff() > 0.0))
     {
         return fallback * rgb;
     }
     const double k = up.gamutScale(rgb);
-    Upsampler::Fit f = up.fit(rgb / k, warm ? *warm : Upsampler::Coeffs::Zero());
-    if (warm && f.residual > 1e-7)
+    const Vec3 scaled = rgb / k;
+    uint64_t key = 0;
+    if (cache && k > 1.0)
+    {
+        key = ShellKey(scaled, up.renderer().white());
+        const auto it = cache->find(key);
+        if (it != cache->end())
+        {
+            return to.render(Upsampler::Remittance(it->second)) * k;
+        }
+    }
+    Upsampler::Fit f = up.fit(scaled, warm ? *warm : Upsampler::Coeffs::Zero());
+    if (warm && f.residual > 1e-4)
     {
         // A neighbour's coefficients can sit on a far slope of the sigmoid:
         // start again from the flat grey and keep the better fit.
-        const Upsampler::Fit cold = up.fit(rgb / k);
+        const Upsampler::Fit cold = up.fit(scaled);
         if (cold.residual < f.residual)
         {
             f = cold;
@@ -129,6 +158,10 @@ Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3&
     if (warm)
     {
         *warm = f.coeffs;
+    }
+    if (cache && k > 1.0)
+    {
+        cache->emplace(key, f.coeffs);
     }
     return to.render(Upsampler::Remittance(f.coeffs)) * k;
 }

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstdint>
+#include <unordered_map>
+
 #include <Eigen/Core>
 
 #include "transforms/SurfaceRenderer.h"
@@ -49,11 +52,17 @@ private:
     const SurfaceRenderer& m_from;
 };
 
+/// Fits already made for colours on the gamut's shell (see gamutScale),
+/// keyed by the scaled colour quantised to 2^-20 of the white: all HDR
+/// pixels of one chromaticity share a fit. One per thread.
+using UpsampleCache = std::unordered_map<uint64_t, Upsampler::Coeffs>;
+
 /// `upsample` for one pixel: scale into the gamut, fit under S1, render
 /// the remittance under S2, scale back. Pixels with no positive channel go
 /// through `fallback` (a linear 3×3: black and negative noise have no
 /// remittance). `warm` carries coefficients between neighbouring pixels.
 Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3& fallback,
-                     const Vec3& rgb, Upsampler::Coeffs* warm = nullptr);
+                     const Vec3& rgb, Upsampler::Coeffs* warm = nullptr,
+                     UpsampleCache* cache = nullptr);
 
 }  // namespace bandlight
