@@ -52,11 +52,11 @@ void RunConfig(const ConfigCommandOptions& o)
     options.methods = o.methods.empty() ? LinearMethodNames() : SplitList(o.methods);
     options.workingSpace = o.workingSpace.empty() ? "acescg" : o.workingSpace;
 
-    OCIO::ConfigRcPtr config;
+    ConfigPackage package;
     std::string identified;
     if (o.base.empty())
     {
-        config = BuildConfig(options);
+        package = BuildConfig(options);
         identified = FindRgbSpace(options.workingSpace).name;
     }
     else
@@ -70,13 +70,18 @@ void RunConfig(const ConfigCommandOptions& o)
         {
             throw Exception(o.base + ": cannot read the base config: " + e.what());
         }
-        config = ExtendConfig(base, options, o.workingSpace.empty(), &identified);
+        package = ExtendConfig(base, options, o.workingSpace.empty(), &identified);
     }
-    WriteConfigPackage(config, o.out);
-    std::cout << "Wrote " << o.out << "/config.ocio: " << config->getNumLooks() << " looks and "
-              << config->getNumNamedTransforms() << " named transforms for " << identified << " ("
-              << options.lights.size() << " illuminants, " << options.methods.size()
-              << " methods)\n";
+    WriteConfigPackage(package, o.out);
+    std::cout << "Wrote " << o.out << "/config.ocio: " << package.config->getNumLooks()
+              << " looks and " << package.config->getNumNamedTransforms()
+              << " named transforms for " << identified << " (" << options.lights.size()
+              << " illuminants, " << options.methods.size() << " methods)";
+    if (!package.lutFiles.empty())
+    {
+        std::cout << ", and " << package.lutFiles.size() << " LUT files in " << o.out << "/luts";
+    }
+    std::cout << "\n";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "luts/LutWriter.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::cli
 {
@@ -24,16 +25,37 @@ struct LutCommandOptions
 
 void RunLut(const LutCommandOptions& o, bool sizeGiven)
 {
-    bool isMatrix = false;
-    const OCIO::GroupTransformRcPtr exact = RelightTransform(o.relight, &isMatrix);
     LutOptions options;
     options.format = ParseLutFormat(o.format);
     options.size = o.size;
     options.forceLattice = sizeGiven;
     options.shaper = ShaperSpec::Parse(o.shaper);
-    const char* description = exact->getFormatMetadata().getChildElement(0).getElementValue();
-    options.description = description ? description : "";
-    const LutFiles files = WriteLut(exact, isMatrix, options, o.out);
+    const MethodSpec method = ParseMethod(o.relight.method);
+    LutFiles files;
+    if (method.isLinear())
+    {
+        bool isMatrix = true;
+        const OCIO::GroupTransformRcPtr exact = RelightTransform(o.relight, &isMatrix);
+        files = WriteLut(exact, isMatrix, options, o.out);
+    }
+    else
+    {
+        // Bake straight from the per-pixel spectral fit, not from a lattice.
+        const NamedSpectrum from = ResolveIlluminant(o.relight.from);
+        const NamedSpectrum to = ResolveIlluminant(o.relight.to);
+        const auto relighter = std::make_shared<Relighter>(Light{from.name, from.spectrum},
+                                                           Light{to.name, to.spectrum}, method,
+                                                           FindRgbSpace(o.relight.workingSpace));
+        if (options.shaper.kind == ShaperSpec::Kind::LOG2)
+        {
+            options.shaper = ShaperSpec::ForNonLinear();
+        }
+        options.description = "Relight from " + from.name + " to " + to.name + " in " +
+                              FindRgbSpace(o.relight.workingSpace).displayName + ". " +
+                              DescribeMethod(method);
+        files = WriteLut([relighter](float* rgb, size_t n) { relighter->apply(rgb, n); }, options,
+                         o.out);
+    }
     std::cout << "Wrote " << files.lut << ": ";
     if (!files.lattice)
     {

@@ -100,8 +100,9 @@ void RunPackage(const std::string& dir)
     ConfigOptions options;
     options.lights = LectureLights();
     options.methods = LinearMethodNames();
-    const OCIO::ConstConfigRcPtr config = BuildConfig(options);
-    WriteConfigPackage(config, dir);
+    const ConfigPackage package = BuildConfig(options);
+    WriteConfigPackage(package, dir);
+    const OCIO::ConstConfigRcPtr config = package.config;
     const RgbSpace& working = FindRgbSpace(options.workingSpace);
     const std::string workingName = ColorSpaceName(working);
 

@@ -99,7 +99,7 @@ OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bo
     const RgbSpace& working = FindRgbSpace(o.workingSpace);
     if (isMatrix)
     {
-        *isMatrix = true;  // every method so far is a 3×3
+        *isMatrix = method.isLinear();
     }
     return IlluminantChangeTransform({from.name, from.spectrum}, {to.name, to.spectrum}, method,
                                      working);

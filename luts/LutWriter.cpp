@@ -171,7 +171,8 @@ PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact)
     OCIO::ConstCPUProcessorRcPtr cpu =
         OCIO::Config::CreateRaw()->getProcessor(exact)->getOptimizedCPUProcessor(
             OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
-    return [cpu](float* rgb, size_t count) {
+    return [cpu](float* rgb, size_t count)
+    {
         OCIO::PackedImageDesc desc(rgb, long(count), 1, 3);
         cpu->apply(desc);
     };

@@ -35,7 +35,18 @@ struct ShaperSpec
     Kind kind = Kind::LOG2;
     double minLinear = -0.0005;
     double breakLinear = 1.0 / 32768.0;  // 2^-15 ≈ 3.05e-5
-    double maxLinear = 131072.0;  // 2^17: covers half-float's 65504 with a stop to spare
+    double maxLinear = 131072.0;         // 2^17: covers half-float's 65504 with a stop to spare
+
+    /// The shaper for LUTs of non-linear transforms (upsample): the break at
+    /// 2^-8, so the log2 segment spans 25 rather than 32 stops and the
+    /// lattice is finer where colours are (0.8 stop a cell at 33³, against
+    /// 1.8); the kink then lies at 0.004, where greys lose their exactness.
+    static ShaperSpec ForNonLinear()
+    {
+        ShaperSpec s;
+        s.breakLinear = 1.0 / 256.0;
+        return s;
+    }
 
     /// "log2" or "none"; throws Exception otherwise.
     static ShaperSpec Parse(const std::string& text);

@@ -112,9 +112,12 @@ void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observ
     config.addColorSpace(cs);
 }
 
-void AddLooks(OCIO::Config& config, const ConfigOptions& o, const RgbSpace& working,
+constexpr const char* kLutFolder = "luts";
+
+void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& working,
               const std::string& processSpace)
 {
+    OCIO::Config& config = *package.config;
     std::vector<MethodSpec> methods;
     for (const std::string& m : o.methods)
     {
@@ -146,14 +149,32 @@ void AddLooks(OCIO::Config& config, const ConfigOptions& o, const RgbSpace& work
                                     "' clashes with a look, named transform or colour space the "
                                     "config already has");
                 }
-                const Mat3 m = IlluminantChangeMatrix(from, to, method, working, o.observer);
                 const std::string description = "Relight from " + from.name + " to " + to.name +
                                                 " in " + working.displayName + ". " +
                                                 DescribeMethod(method);
+                // A matrix inline; a non-linear method as a CLF file the
+                // package carries (configs cannot hold a 3D LUT inline).
+                OCIO::TransformRcPtr transform;
+                if (method.isLinear())
+                {
+                    transform = MakeMatrixTransform(
+                        IlluminantChangeMatrix(from, to, method, working, o.observer));
+                }
+                else
+                {
+                    const std::string file = name + ".clf";
+                    package.lutFiles.emplace_back(
+                        std::string(kLutFolder) + "/" + file,
+                        IlluminantChangeTransform(from, to, method, working, o.observer));
+                    OCIO::FileTransformRcPtr f = OCIO::FileTransform::Create();
+                    f->setSrc(file.c_str());
+                    f->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+                    transform = f;
+                }
                 OCIO::LookRcPtr look = OCIO::Look::Create();
                 look->setName(name.c_str());
                 look->setProcessSpace(processSpace.c_str());
-                look->setTransform(MakeMatrixTransform(m));
+                look->setTransform(transform);
                 look->setDescription(description.c_str());
                 config.addLook(look);
 
@@ -165,7 +186,7 @@ void AddLooks(OCIO::Config& config, const ConfigOptions& o, const RgbSpace& work
                 nt->setFamily((std::string(kFamilyLooks) + "/" + method.name).c_str());
                 nt->setDescription(
                     (description + " Expects " + working.displayName + " input.").c_str());
-                nt->setTransform(MakeMatrixTransform(m), OCIO::TRANSFORM_DIR_FORWARD);
+                nt->setTransform(transform->createEditableCopy(), OCIO::TRANSFORM_DIR_FORWARD);
                 config.addNamedTransform(nt);
             }
         }
@@ -227,13 +248,15 @@ std::vector<Light> LectureLights()
     return lights;
 }
 
-OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& o)
+ConfigPackage BuildConfig(const ConfigOptions& o)
 {
     RequireLights(o);
     const RgbSpace& working = FindRgbSpace(o.workingSpace);
     const std::string workingName = ColorSpaceName(working);
 
-    OCIO::ConfigRcPtr config = OCIO::Config::Create();
+    ConfigPackage package;
+    package.config = OCIO::Config::Create();
+    OCIO::ConfigRcPtr& config = package.config;
     config->setVersion(2, 0);
     config->setName(("bandlight " + working.name).c_str());
     config->setDescription(
@@ -314,13 +337,17 @@ OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& o)
     config->setActiveDisplays("sRGB");
     config->setActiveViews("Standard, Raw");
 
-    AddLooks(*config, o, working, workingName);
+    AddLooks(package, o, working, workingName);
+    if (!package.lutFiles.empty())
+    {
+        config->addSearchPath(kLutFolder);
+    }
     config->validate();
-    return config;
+    return package;
 }
 
-OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, bool detect,
-                               std::string* identifiedSpace)
+ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, bool detect,
+                           std::string* identifiedSpace)
 {
     RequireLights(o);
     OCIO::ConstColorSpaceRcPtr sceneLinear = base->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
@@ -373,7 +400,9 @@ OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions
         *identifiedSpace = working.name;
     }
 
-    OCIO::ConfigRcPtr config = base->createEditableCopy();
+    ConfigPackage package;
+    package.config = base->createEditableCopy();
+    OCIO::ConfigRcPtr& config = package.config;
     // The extended config is written elsewhere: anchor the base's relative
     // search paths (its LUT folders) at the base's own directory.
     const std::string baseDir = base->getWorkingDir();
@@ -399,19 +428,38 @@ OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions
     {
         AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));
     }
-    AddLooks(*config, o, working, processSpace);
+    AddLooks(package, o, working, processSpace);
+    if (!package.lutFiles.empty())
+    {
+        config->addSearchPath(kLutFolder);
+    }
     config->validate();
-    return config;
+    return package;
 }
 
-void WriteConfigPackage(const OCIO::ConstConfigRcPtr& config, const std::string& dir)
+void WriteConfigPackage(const ConfigPackage& package, const std::string& dir)
 {
-    if (::mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST)
+    auto makeDir = [](const std::string& d)
     {
-        throw Exception(dir + ": cannot create the config directory (" + std::strerror(errno) +
-                        ")");
+        if (::mkdir(d.c_str(), 0777) != 0 && errno != EEXIST)
+        {
+            throw Exception(d + ": cannot create the directory (" + std::strerror(errno) + ")");
+        }
+    };
+    makeDir(dir);
+    if (!package.lutFiles.empty())
+    {
+        makeDir(dir + "/" + kLutFolder);
     }
-    WriteFileAtomically(dir + "/config.ocio", [&](std::ostream& os) { config->serialize(os); });
+    // The LUTs first: a config is never left pointing at files not yet there.
+    OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
+    for (const auto& [path, transform] : package.lutFiles)
+    {
+        WriteFileAtomically(dir + "/" + path, [&](std::ostream& os)
+                            { transform->write(raw, "Academy/ASC Common LUT Format", os); });
+    }
+    WriteFileAtomically(dir + "/config.ocio",
+                        [&](std::ostream& os) { package.config->serialize(os); });
 }
 
 }  // namespace bandlight

@@ -22,6 +22,14 @@ struct ConfigOptions
     Observer observer = Observer::CIE1931_2DEG;
 };
 
+/// A config with the LUT files its non-linear looks reference (paths
+/// relative to the config's directory, "luts/<look>.clf").
+struct ConfigPackage
+{
+    OCIO::ConfigRcPtr config;
+    std::vector<std::pair<std::string, OCIO::GroupTransformRcPtr>> lutFiles;
+};
+
 /// The lecture's five illuminants: A, C, D65, F2, F11.
 std::vector<Light> LectureLights();
 
@@ -30,8 +38,10 @@ std::vector<Light> LectureLights();
 /// and CIE-XYZ-D65 interchange spaces, an sRGB-encoded space, a Non-Color
 /// data space, the lecture's band space, an sRGB display with Standard and
 /// Raw views, every role ociocheck and Blender ask for, and the looks and
-/// named transforms. Built with the OCIO Config API and validated.
-OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& options);
+/// named transforms. Built with the OCIO Config API and validated. Linear
+/// methods are inline matrices; upsample looks are FileTransforms of CLF
+/// files (shaper + 33³ LUT + inverse shaper) in the package's luts/ folder.
+ConfigPackage BuildConfig(const ConfigOptions& options);
 
 /// Adds the same looks, named transforms and band space to a copy of an
 /// existing config, leaving everything it had intact. The looks' process
@@ -40,11 +50,12 @@ OCIO::ConfigRcPtr BuildConfig(const ConfigOptions& options);
 /// aces_interchange space unless `options.workingSpace` is given explicitly
 /// (`detect` false). Throws Exception when the space cannot be identified
 /// or a new name clashes with one the base already has.
-OCIO::ConfigRcPtr ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions options,
-                               bool detect, std::string* identifiedSpace = nullptr);
+ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions options, bool detect,
+                           std::string* identifiedSpace = nullptr);
 
-/// Writes `config` as DIR/config.ocio (creating DIR), atomically.
-void WriteConfigPackage(const OCIO::ConstConfigRcPtr& config, const std::string& dir);
+/// Writes the package as DIR/config.ocio plus its LUT files (creating the
+/// folders), every file atomically.
+void WriteConfigPackage(const ConfigPackage& package, const std::string& dir);
 
 /// The named transform that carries the same transform as a look:
 /// "relight_<look>" (OCIO does not let the two share a name).

@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 
+#include "luts/LutWriter.h"
 #include "spectral/Exception.h"
 
 namespace bandlight
@@ -38,12 +39,27 @@ OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name,
 
 OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
                                                     const MethodSpec& method,
-                                                    const RgbSpace& working, Observer observer)
+                                                    const RgbSpace& working, Observer observer,
+                                                    int lutSize)
 {
-    const Mat3 m = IlluminantChangeMatrix(from, to, method, working, observer);
-    return Group(m, LookName(method.name, from.name, to.name),
-                 "Relight from " + from.name + " to " + to.name + " in " + working.displayName +
-                     ". " + DescribeMethod(method));
+    const std::string name = LookName(method.name, from.name, to.name);
+    const std::string description = "Relight from " + from.name + " to " + to.name + " in " +
+                                    working.displayName + ". " + DescribeMethod(method);
+    auto relighter = std::make_shared<Relighter>(from, to, method, working, observer);
+    if (relighter->isLinear())
+    {
+        return Group(relighter->matrix(), name, description);
+    }
+    const ShaperSpec shaper = ShaperSpec::ForNonLinear();
+    OCIO::GroupTransformRcPtr g = LatticeTransform(
+        [relighter](float* rgb, size_t count) { relighter->apply(rgb, count); }, shaper, lutSize);
+    OCIO::FormatMetadata& md = g->getFormatMetadata();
+    md.setName(name.c_str());
+    md.setID(name.c_str());
+    md.addChildElement(OCIO::METADATA_DESCRIPTION, (description + " " + std::to_string(lutSize) +
+                                                    "^3 LUT, shaper " + shaper.describe() + ".")
+                                                       .c_str());
+    return g;
 }
 
 OCIO::GroupTransformRcPtr BandSpaceTransform(const BandSet& bands, const RgbSpace& working,

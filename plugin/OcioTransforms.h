@@ -17,12 +17,15 @@ namespace OCIO = OCIO_NAMESPACE;
 OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m);
 
 /// The illuminant change from `from` to `to` by `method`, for images in the
-/// linear RGB space `working`: a group holding one MatrixTransform (every
-/// linear method is one 3×3), with the method's description as metadata.
+/// linear RGB space `working`, with the method's description as metadata: a
+/// group holding one MatrixTransform for the linear methods; for upsample,
+/// the log2 shaper, a `lutSize`³ 3D LUT baked from the per-pixel spectral
+/// fit, and the inverse shaper. Throws Exception for `spectral`.
 OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
                                                     const MethodSpec& method,
                                                     const RgbSpace& working,
-                                                    Observer observer = Observer::CIE1931_2DEG);
+                                                    Observer observer = Observer::CIE1931_2DEG,
+                                                    int lutSize = 33);
 
 /// Working RGB → the band space of a three-band set (radiometric band
 /// values, VB/VG/VR for the lecture's bands). Throws Exception for other

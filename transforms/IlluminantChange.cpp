@@ -146,9 +146,9 @@ const std::vector<std::string>& LinearMethodNames()
 
 const std::vector<std::string>& AllMethodNames()
 {
-    static const std::vector<std::string> names = {
-        "none",     "vonkries", "bradford",  "cat02",   "band3",   "band3-wp",
-        "band6",    "band6-wp", "fit3x3",    "prefilter", "metamer", "upsample"};
+    static const std::vector<std::string> names = {"none",   "vonkries",  "bradford", "cat02",
+                                                   "band3",  "band3-wp",  "band6",    "band6-wp",
+                                                   "fit3x3", "prefilter", "metamer",  "upsample"};
     return names;
 }
 
@@ -261,8 +261,8 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
         {
             const SurfaceRenderer r1(from.spectrum, working, observer);
             const SurfaceRenderer r2(to.spectrum, working, observer);
-            return FitMatrix(r1, r2, method.training.empty() ? TrainingSet().samples
-                                                             : method.training);
+            return FitMatrix(r1, r2,
+                             method.training.empty() ? TrainingSet().samples : method.training);
         }
         case ChangeMethod::METAMER:
             return MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
@@ -332,8 +332,9 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
 {
     if (method.method == ChangeMethod::SPECTRAL)
     {
-        throw Exception("method 'spectral' needs the spectra of the surfaces: it is the "
-                        "reference `bandlight accuracy` measures against, not an image transform");
+        throw Exception(
+            "method 'spectral' needs the spectra of the surfaces: it is the "
+            "reference `bandlight accuracy` measures against, not an image transform");
     }
     if (method.isLinear())
     {
@@ -361,17 +362,17 @@ Vec3 Relighter::apply(const Vec3& rgb) const
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
 {
-    auto run = [&](size_t begin, size_t end) {
+    auto run = [&](size_t begin, size_t end)
+    {
         Upsampler::Coeffs warm = Upsampler::Coeffs::Zero();
         UpsampleCache cache;
         for (size_t i = begin; i < end; ++i)
         {
             float* p = rgb + 3 * i;
             const Vec3 in(p[0], p[1], p[2]);
-            const Vec3 out =
-                m_linear ? Vec3(m_matrix * in)
-                         : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in,
-                                           &warm, &cache);
+            const Vec3 out = m_linear ? Vec3(m_matrix * in)
+                                      : UpsampleRelight(m_spectral->upsampler, m_spectral->to,
+                                                        m_matrix, in, &warm, &cache);
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "spectral/CieData.h"
-#include "spectral/SpectrumIO.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/RgbSpaces.h"
 #include "spectral/Spectrum.h"
+#include "spectral/SpectrumIO.h"
 #include "transforms/BandSet.h"
 
 namespace bandlight
@@ -95,8 +95,8 @@ class Relighter
 {
 public:
     /// Throws Exception for `spectral` (it needs spectra, not pixels).
-    Relighter(const Light& from, const Light& to, const MethodSpec& method,
-              const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
+    Relighter(const Light& from, const Light& to, const MethodSpec& method, const RgbSpace& working,
+              Observer observer = Observer::CIE1931_2DEG);
     ~Relighter();
     Relighter(Relighter&&) noexcept;
 

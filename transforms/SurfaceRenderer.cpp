@@ -72,7 +72,8 @@ ReflectanceSet RandomSmoothSet(int count, unsigned seed, const std::string& name
 
 const ReflectanceSet& TrainingSet()
 {
-    static const ReflectanceSet set = [] {
+    static const ReflectanceSet set = []
+    {
         ReflectanceSet s = RandomSmoothSet(100, 1, "training");
         for (size_t i = 0; i < 8; ++i)
         {
@@ -85,7 +86,8 @@ const ReflectanceSet& TrainingSet()
 
 const ReflectanceSet& HeldOutTcs()
 {
-    static const ReflectanceSet set = [] {
+    static const ReflectanceSet set = []
+    {
         ReflectanceSet s{"tcs09-15", {}};
         for (size_t i = 8; i < TestColourSamples().size(); ++i)
         {

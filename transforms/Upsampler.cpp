@@ -13,13 +13,19 @@ namespace
 {
 constexpr int kN = SurfaceRenderer::kSamples;
 
-double Sigmoid(double x) noexcept { return 0.5 + x / (2.0 * std::sqrt(1.0 + x * x)); }
+double Sigmoid(double x) noexcept
+{
+    return 0.5 + x / (2.0 * std::sqrt(1.0 + x * x));
+}
 double SigmoidSlope(double x) noexcept
 {
     const double q = 1.0 + x * x;
     return 0.5 / (q * std::sqrt(q));
 }
-double T(int i) noexcept { return double(i) / double(kN - 1); }
+double T(int i) noexcept
+{
+    return double(i) / double(kN - 1);
+}
 }  // namespace
 
 Upsampler::Upsampler(const SurfaceRenderer& from) : m_from(from) {}
@@ -49,7 +55,8 @@ Upsampler::Fit Upsampler::fit(const Vec3& rgb, const Coeffs& start) const
     Fit f;
     f.coeffs = start;
     double mu = 1e-3;
-    auto evaluate = [&](const Coeffs& c, Vec3& residual, Mat3* jac) {
+    auto evaluate = [&](const Coeffs& c, Vec3& residual, Mat3* jac)
+    {
         SurfaceRenderer::Samples r;
         Eigen::Matrix<double, kN, 3> dr;
         for (int i = 0; i < kN; ++i)

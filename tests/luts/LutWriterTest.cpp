@@ -205,8 +205,9 @@ TEST_CASE("LUT errors", "[luts]")
     CHECK_THROWS_WITH(ParseLutFormat("icc"), Contains("unknown LUT format 'icc'"));
     CHECK(ParseLutFormat("CUBE") == LutFormat::CUBE);
     CHECK_THROWS_WITH(ShaperSpec::Parse("gamma"), Contains("unknown shaper 'gamma'"));
-    CHECK_THROWS_WITH(BakeLattice(PixelFunctionOf(Relight("A", "D65", "none")), ShaperSpec(), 1, false),
-                      Contains("size must be 2 to 129"));
+    CHECK_THROWS_WITH(
+        BakeLattice(PixelFunctionOf(Relight("A", "D65", "none")), ShaperSpec(), 1, false),
+        Contains("size must be 2 to 129"));
     LutOptions o;
     o.forceLattice = true;
     CHECK_THROWS_WITH(WriteLut(Relight("A", "D65", "none"), true, o, "/nonexistent/dir/x.clf"),

@@ -6,6 +6,7 @@
 #include "plugin/ConfigBuilder.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;
@@ -44,7 +45,7 @@ TEST_CASE("Every look of a built config is the library's matrix", "[plugin]")
     for (const char* space : {"acescg", "rec709"})
     {
         const ConfigOptions o = Options(space);
-        const OCIO::ConstConfigRcPtr config = BuildConfig(o);
+        const OCIO::ConstConfigRcPtr config = BuildConfig(o).config;
         // 5 lights → 20 ordered pairs, 7 methods.
         CHECK(config->getNumLooks() == 140);
         CHECK(config->getNumNamedTransforms() == 140);
@@ -74,7 +75,7 @@ TEST_CASE("Every look of a built config is the library's matrix", "[plugin]")
 
 TEST_CASE("A built config has the roles, spaces and views hosts ask for", "[plugin]")
 {
-    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg"));
+    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg")).config;
     for (const char* role :
          {"scene_linear", "data", "color_picking", "texture_paint", "default_byte", "default_float",
           "default_sequencer", "reference", "aces_interchange", "cie_xyz_d65_interchange",
@@ -100,7 +101,7 @@ TEST_CASE("A built config has the roles, spaces and views hosts ask for", "[plug
 
 TEST_CASE("The sRGB space decodes the IEC 61966-2-1 curve", "[plugin]")
 {
-    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("rec709"));
+    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("rec709")).config;
     auto cpu = config->getProcessor("sRGB", "Linear Rec.709 (sRGB)")->getDefaultCPUProcessor();
     float rgb[3] = {0.5f, 0.04045f, 1.0f};
     cpu->applyRGB(rgb);
@@ -111,7 +112,7 @@ TEST_CASE("The sRGB space decodes the IEC 61966-2-1 curve", "[plugin]")
 
 TEST_CASE("A config survives serialisation", "[plugin]")
 {
-    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg"));
+    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg")).config;
     std::ostringstream os;
     config->serialize(os);
     std::istringstream is(os.str());
@@ -125,7 +126,7 @@ TEST_CASE("A config survives serialisation", "[plugin]")
 
 TEST_CASE("The band space converts working RGB to the lecture's bands", "[plugin]")
 {
-    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg"));
+    const OCIO::ConstConfigRcPtr config = BuildConfig(Options("acescg")).config;
     const Mat3 m = MeasureMatrix(config->getProcessor("ACEScg", "Bands VB-VG-VR (lecture)"));
     const Eigen::MatrixXd expected =
         WorkingToBandMatrix(BandSet::Lecture(), FindRgbSpace("acescg"));
@@ -136,17 +137,17 @@ TEST_CASE("Extending a base config keeps it and identifies its scene_linear", "[
 {
     // A studio-like base: a Rec.709 scene_linear with an XYZ interchange role,
     // built from a bandlight config in another working space.
-    const OCIO::ConstConfigRcPtr base = BuildConfig(Options("rec709"));
+    const OCIO::ConstConfigRcPtr base = BuildConfig(Options("rec709")).config;
     ConfigOptions o = Options("acescg");
     o.lights = {L("A"), L("D65")};
     o.methods = {"bradford", "band3"};
-    OCIO::ConfigRcPtr ext;
+    OCIO::ConstConfigRcPtr ext;
     // The base already holds these looks: the clash is refused.
     CHECK_THROWS_WITH(ExtendConfig(base, o, true), Contains("clashes"));
 
     o.lights = {L("D50"), L("D75")};
     std::string identified;
-    ext = ExtendConfig(base, o, true, &identified);
+    ext = ExtendConfig(base, o, true, &identified).config;
     CHECK(identified == "rec709");
     CHECK(ext->getNumLooks() == base->getNumLooks() + 4);
     for (int i = 0; i < base->getNumColorSpaces(); ++i)
@@ -172,4 +173,50 @@ TEST_CASE("Config errors are clear", "[plugin]")
     o = Options("acescg");
     o.lights = {L("A"), L("A")};
     CHECK_THROWS_WITH(BuildConfig(o), Contains("two illuminants share a name"));
+}
+
+TEST_CASE("upsample looks are CLF files the package carries", "[plugin]")
+{
+    ConfigOptions o = Options("acescg");
+    o.lights = {L("A"), L("D65")};
+    o.methods = {"bradford", "upsample"};
+    const ConfigPackage p = BuildConfig(o);
+    REQUIRE(p.lutFiles.size() == 2);
+    CHECK(p.lutFiles[0].first == "luts/upsample_A_to_D65.clf");
+    auto f = OCIO::DynamicPtrCast<const OCIO::FileTransform>(
+        p.config->getLook("upsample_A_to_D65")->getTransform());
+    REQUIRE(f);
+    CHECK(std::string(f->getSrc()) == "upsample_A_to_D65.clf");
+}
+
+TEST_CASE("The OCIO form of upsample agrees with its direct form", "[plugin]")
+{
+    // Measured on the TCS under A and F11 (and 0.1x, 10x of them): mean ΔE00
+    // between the 33³ LUT and the per-pixel fit 0.4 (A) and 0.7 (F11).
+    const RgbSpace& ws = FindRgbSpace("acescg");
+    for (const char* from : {"A", "F11"})
+    {
+        const Relighter direct(L(from), L("D65"), ParseMethod("upsample"), ws);
+        const auto cpu = OCIO::Config::CreateRaw()
+                             ->getProcessor(IlluminantChangeTransform(L(from), L("D65"),
+                                                                      ParseMethod("upsample"), ws))
+                             ->getDefaultCPUProcessor();
+        const SurfaceRenderer r1(BuiltinIlluminant(from), ws), r2(BuiltinIlluminant("D65"), ws);
+        const Vec3 white = r2.rgbToXyz() * r2.white();
+        double sum = 0.0;
+        int n = 0;
+        for (const NamedSpectrum& s : TestColourSamples())
+        {
+            const Vec3 c = r1.render(s.spectrum);
+            const Vec3 a = direct.apply(c);
+            float p[3] = {float(c.x()), float(c.y()), float(c.z())};
+            cpu->applyRGB(p);
+            const Vec3 b(p[0], p[1], p[2]);
+            sum +=
+                DeltaE2000(XyzToLab(r2.rgbToXyz() * a, white), XyzToLab(r2.rgbToXyz() * b, white));
+            ++n;
+        }
+        INFO(from << ": mean ΔE00 LUT vs direct " << sum / n);
+        CHECK(sum / n < 1.0);
+    }
 }

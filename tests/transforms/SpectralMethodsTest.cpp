@@ -14,8 +14,14 @@ using Catch::Matchers::Contains;
 
 namespace
 {
-Light L(const char* name) { return {name, BuiltinIlluminant(name)}; }
-const RgbSpace& Working() { return FindRgbSpace("acescg"); }
+Light L(const char* name)
+{
+    return {name, BuiltinIlluminant(name)};
+}
+const RgbSpace& Working()
+{
+    return FindRgbSpace("acescg");
+}
 
 Vec3 Lab(const SurfaceRenderer& r, const Vec3& rgb)
 {
@@ -25,8 +31,8 @@ Vec3 Lab(const SurfaceRenderer& r, const Vec3& rgb)
 
 TEST_CASE("fit3x3, prefilter and metamer map S1's white to S2's", "[transforms][methods]")
 {
-    for (const auto& [from, to] : {std::pair{"A", "D65"}, std::pair{"F11", "D65"},
-                                   std::pair{"F2", "A"}})
+    for (const auto& [from, to] :
+         {std::pair{"A", "D65"}, std::pair{"F11", "D65"}, std::pair{"F2", "A"}})
     {
         const SurfaceRenderer r1(BuiltinIlluminant(from), Working());
         const SurfaceRenderer r2(BuiltinIlluminant(to), Working());
@@ -44,7 +50,8 @@ TEST_CASE("fit3x3 beats Bradford on the colours it was fitted on", "[transforms]
     const SurfaceRenderer r1(BuiltinIlluminant("F11"), Working());
     const SurfaceRenderer r2(BuiltinIlluminant("D65"), Working());
     const Mat3 fit = IlluminantChangeMatrix(L("F11"), L("D65"), ParseMethod("fit3x3"), Working());
-    const Mat3 brad = IlluminantChangeMatrix(L("F11"), L("D65"), ParseMethod("bradford"), Working());
+    const Mat3 brad =
+        IlluminantChangeMatrix(L("F11"), L("D65"), ParseMethod("bradford"), Working());
     double eFit = 0.0, eBrad = 0.0;
     for (const NamedSpectrum& s : TrainingSet().samples)
     {
