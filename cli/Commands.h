@@ -14,5 +14,6 @@ void AddConfigCommand(CLI::App& app);
 void AddLutCommand(CLI::App& app);
 void AddApplyCommand(CLI::App& app);
 void AddPackageCommand(CLI::App& app);
+void AddAccuracyCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddLutCommand(app);
     bandlight::cli::AddApplyCommand(app);
     bandlight::cli::AddPackageCommand(app);
+    bandlight::cli::AddAccuracyCommand(app);
     try
     {
         app.parse(argc, argv);

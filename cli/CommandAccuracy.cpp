@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `bandlight accuracy`: every method against the spectral reference, and
+// what each costs — one table, one JSON document, one picture.
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/Commands.h"
+#include "cli/Common.h"
+#include "cli/Cost.h"
+#include "cli/Gnuplot.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+#include "transforms/Accuracy.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+
+struct AccuracyCommandOptions
+{
+    std::string illuminants;
+    std::string methods;
+    std::vector<std::string> reflectances;
+    std::string workingSpace = "acescg";
+    std::string json;
+    std::string plot;
+    bool noCost = false;
+};
+
+std::vector<std::string> Split(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string s; std::getline(in, s, ',');)
+    {
+        if (!s.empty())
+        {
+            out.push_back(s);
+        }
+    }
+    return out;
+}
+
+/// Per method over all pairs: the mean of the pairs' means, the 95th
+/// percentile of the pairs' 95th percentiles, the max, and where it is.
+struct Summary
+{
+    double mean = 0.0;
+    double p95 = 0.0;
+    double max = 0.0;
+    std::string worst;
+};
+
+Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& method,
+                  const std::string& set,
+                  const std::vector<std::pair<std::string, std::string>>& onlyPairs = {})
+{
+    Summary s;
+    std::vector<double> p95s;
+    int n = 0;
+    for (const AccuracyRow& r : rows)
+    {
+        if (r.method != method || r.set != set)
+        {
+            continue;
+        }
+        if (!onlyPairs.empty() && std::find(onlyPairs.begin(), onlyPairs.end(),
+                                            std::pair{r.from, r.to}) == onlyPairs.end())
+        {
+            continue;
+        }
+        s.mean += r.mean;
+        p95s.push_back(r.p95);
+        if (r.max > s.max)
+        {
+            s.max = r.max;
+            s.worst = r.worstSample + " " + r.from + "->" + r.to;
+        }
+        ++n;
+    }
+    s.mean = n ? s.mean / n : 0.0;
+    s.p95 = Percentile(p95s, 0.95);
+    return s;
+}
+
+void Plot(const std::string& path, const std::vector<std::string>& methods,
+          const std::map<std::string, double>& error, const std::map<std::string, double>& cost,
+          const std::string& setName)
+{
+    // One point per method (ns/pixel, mean ΔE00), the Pareto front joined:
+    // the methods no other method beats in both error and cost.
+    struct Point
+    {
+        std::string name;
+        double ns, de;
+    };
+    std::vector<Point> pts;
+    for (const std::string& m : methods)
+    {
+        if (cost.count(m) && error.count(m))
+        {
+            pts.push_back({m, std::max(cost.at(m), 1e-3), error.at(m)});
+        }
+    }
+    std::sort(pts.begin(), pts.end(),
+              [](const Point& a, const Point& b)
+              { return a.ns < b.ns || (a.ns == b.ns && a.de < b.de); });
+    // Labels of methods at the same cost alternate right and left of their points.
+    std::ostringstream data;
+    for (size_t i = 0; i < pts.size(); ++i)
+    {
+        size_t rank = 0;
+        for (size_t k = 0; k < i; ++k)
+        {
+            rank += pts[k].ns == pts[i].ns ? 1 : 0;
+        }
+        data << pts[i].ns << " " << pts[i].de << " \"" << pts[i].name << "\" "
+             << (rank % 2 ? -1 : 1) << "\n";
+    }
+    data << "\n\n";
+    double best = 1e30;
+    for (const Point& p : pts)
+    {
+        if (p.de < best)
+        {
+            best = p.de;
+            data << p.ns << " " << p.de << "\n";
+        }
+    }
+    const std::string script =
+        "set title 'What accuracy costs: re-lighting " + setName +
+        ", mean over every illuminant pair'\n"
+        "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
+        "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
+        "set logscale x\nset grid\nset key top right\nset yrange [0:*]\n"
+        "set offsets graph 0.1, graph 0.1, graph 0.08, 0\n"
+        "plot $DATA index 1 using 1:2 with lines lw 2 lc rgb '#2a7ab0' title 'Pareto front', \\\n"
+        "     $DATA index 0 using 1:2 with points pt 7 ps 1.4 lc rgb '#c0392b' notitle, \\\n"
+        "     $DATA index 0 using 1:($4 > 0 ? $2 : 1/0):3 with labels left offset char 1,0 "
+        "font ',10' notitle, \\\n"
+        "     $DATA index 0 using 1:($4 < 0 ? $2 : 1/0):3 with labels right offset char -1,0 "
+        "font ',10' notitle\n";
+    RunGnuplot(script, data.str(), path);
+}
+
+void RunAccuracy(const AccuracyCommandOptions& o)
+{
+    AccuracyOptions options = DefaultAccuracyOptions();
+    options.workingSpace = o.workingSpace;
+    FindRgbSpace(o.workingSpace);
+    if (!o.illuminants.empty())
+    {
+        options.lights.clear();
+        for (const std::string& name : Split(o.illuminants))
+        {
+            const NamedSpectrum s = ResolveIlluminant(name);
+            options.lights.push_back({s.name, s.spectrum});
+        }
+        if (options.lights.size() < 2)
+        {
+            throw Exception("accuracy needs at least two illuminants");
+        }
+    }
+    if (!o.methods.empty())
+    {
+        options.methods = Split(o.methods);
+    }
+    options.methods.push_back("spectral");
+    for (const std::string& m : options.methods)
+    {
+        ParseMethod(m);
+    }
+    for (const std::string& file : o.reflectances)
+    {
+        options.sets.push_back({file, ReadSpectraFile(file)});
+    }
+
+    const size_t pairs = options.lights.size() * (options.lights.size() - 1);
+    std::cerr << "accuracy: " << options.methods.size() << " methods x " << pairs
+              << " illuminant pairs x " << options.sets.size() << " reflectance sets\n";
+    std::mutex mu;
+    int lastTenth = -1;
+    const std::vector<AccuracyRow> rows = MeasureAccuracy(
+        options,
+        [&](double f)
+        {
+            std::lock_guard<std::mutex> lock(mu);
+            const int tenth = int(f * 10.0);
+            if (tenth != lastTenth)
+            {
+                lastTenth = tenth;
+                std::cerr << "accuracy: " << int(f * 100.0 + 0.5) << "% of pairs done\n";
+            }
+        });
+
+    std::vector<CostRow> cost;
+    std::vector<SetupCost> setup;
+    if (!o.noCost)
+    {
+        std::cerr << "accuracy: timing each method on 1920x1080 float RGBA\n";
+        cost = MeasureCost(options.methods, options.workingSpace, 1920L * 1080L);
+        setup = MeasureSetupCost(options.workingSpace);
+    }
+    // Cost of each method as one would apply it to an image (all threads):
+    // its OCIO form, and the per-pixel computation for spectral. Every 3×3
+    // costs the same — one matrix per pixel, bound by memory — so the 3×3
+    // methods share the median of their timings rather than their noise.
+    std::map<std::string, double> costAll;
+    std::vector<double> matrixCosts;
+    const int allThreads = int(std::max(1u, std::thread::hardware_concurrency()));
+    for (const CostRow& c : cost)
+    {
+        if (c.threads == allThreads && c.form != "direct-fit")
+        {
+            costAll[c.method] = c.nsPerPixel;
+            if (c.form == "ocio-matrix")
+            {
+                matrixCosts.push_back(c.nsPerPixel);
+            }
+        }
+    }
+    for (auto& [method, ns] : costAll)
+    {
+        if (ParseMethod(method).isLinear() && !matrixCosts.empty())
+        {
+            ns = Percentile(matrixCosts, 0.5);
+        }
+    }
+
+    const std::string heldOut = HeldOutTcs().name;
+    const std::vector<std::pair<std::string, std::string>> lecturePairs = {
+        {"A", "D65"}, {"F2", "D65"}, {"F11", "D65"}};
+    std::map<std::string, double> plotError;
+    std::cout << "Re-lighting accuracy, CIEDE2000 against the spectral answer ("
+              << options.lights.size() << " illuminants, " << pairs << " ordered pairs, "
+              << FindRgbSpace(o.workingSpace).displayName << ")\n";
+    for (const ReflectanceSet& set : options.sets)
+    {
+        std::cout << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
+                  << "  method       mean    p95     max   worst sample and pair     "
+                     "A/F2/F11->D65 mean   ns/pixel\n";
+        for (const std::string& m : options.methods)
+        {
+            const Summary all = Summarise(rows, m, set.name);
+            const Summary lecture = Summarise(rows, m, set.name, lecturePairs);
+            if (set.name == heldOut)
+            {
+                plotError[m] = all.mean;
+            }
+            char line[256];
+            std::snprintf(line, sizeof line, "  %-10s %6.2f %6.2f %7.2f   %-26s %8.2f   %10s\n",
+                          m.c_str(), all.mean, all.p95, all.max, all.worst.c_str(), lecture.mean,
+                          costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
+            std::cout << line;
+        }
+    }
+    if (!cost.empty())
+    {
+        std::cout << "\ncost per pixel, 1920x1080 float RGBA (best of 3)\n";
+        for (const CostRow& c : cost)
+        {
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "  %-10s %-12s %d thread%s %10.2f ns  %8.1f Mpixel/s\n", c.method.c_str(),
+                          c.form.c_str(), c.threads, c.threads > 1 ? "s" : " ", c.nsPerPixel,
+                          1e3 / c.nsPerPixel);
+            std::cout << line;
+        }
+        for (const SetupCost& s : setup)
+        {
+            std::cout << "  one-off: " << s.what << ": " << Fixed(s.seconds, 3) << " s\n";
+        }
+    }
+
+    if (!o.json.empty())
+    {
+        nlohmann::ordered_json j;
+        j["rows"] = nlohmann::ordered_json::array();
+        for (const AccuracyRow& r : rows)
+        {
+            j["rows"].push_back({{"method", r.method},
+                                 {"from", r.from},
+                                 {"to", r.to},
+                                 {"set", r.set},
+                                 {"mean", r.mean},
+                                 {"p95", r.p95},
+                                 {"max", r.max},
+                                 {"worst_sample", r.worstSample}});
+        }
+        j["cost"] = nlohmann::ordered_json::array();
+        for (const CostRow& c : cost)
+        {
+            j["cost"].push_back({{"method", c.method},
+                                 {"form", c.form},
+                                 {"ns_per_pixel", c.nsPerPixel},
+                                 {"mpixel_per_s", 1e3 / c.nsPerPixel},
+                                 {"threads", c.threads}});
+        }
+        j["setup_cost"] = nlohmann::ordered_json::array();
+        for (const SetupCost& s : setup)
+        {
+            j["setup_cost"].push_back({{"what", s.what}, {"seconds", s.seconds}});
+        }
+        if (o.json == "-")
+        {
+            std::cout << j.dump(2) << "\n";
+        }
+        else
+        {
+            WriteFileAtomically(o.json, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
+            std::cerr << "accuracy: wrote " << o.json << "\n";
+        }
+    }
+    if (!o.plot.empty())
+    {
+        if (costAll.empty())
+        {
+            throw Exception("--plot needs the cost measurement (drop --no-cost)");
+        }
+        Plot(o.plot, options.methods, plotError, costAll, heldOut);
+        std::cerr << "accuracy: wrote " << o.plot << "\n";
+    }
+}
+
+}  // namespace
+
+void AddAccuracyCommand(CLI::App& app)
+{
+    auto o = std::make_shared<AccuracyCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "accuracy",
+        "CIEDE2000 of every method against the spectral answer, and what each costs per pixel");
+    cmd->add_option("--illuminants", o->illuminants,
+                    "Comma-separated illuminants (default: A,C,D50,D65,E,F1-F12)");
+    cmd->add_option("--methods", o->methods,
+                    "Comma-separated methods (default: all image methods)");
+    cmd->add_option("--reflectances", o->reflectances,
+                    "CSV or CGATS file of remittances to add as a set (repeatable)");
+    cmd->add_option("--working-space", o->workingSpace, "Working space")->capture_default_str();
+    cmd->add_option("--json", o->json, "Write all rows and costs as JSON to FILE (- for stdout)");
+    cmd->add_option("--plot", o->plot, "Draw accuracy against cost into FILE.png or FILE.svg");
+    cmd->add_flag("--no-cost", o->noCost, "Skip the timing");
+    cmd->callback([o] { RunAccuracy(*o); });
+}
+
+}  // namespace bandlight::cli

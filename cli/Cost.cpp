@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/Cost.h"
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <thread>
+
+#include "cli/ImageApply.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
+#include "transforms/SurfaceRenderer.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+template <typename F>
+double BestSeconds(F&& f, int runs = 3)
+{
+    double best = 1e30;
+    for (int i = 0; i < runs; ++i)
+    {
+        const auto t0 = Clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    return best;
+}
+
+std::vector<float> TestPixels(long pixels, int channels)
+{
+    std::vector<float> px(size_t(pixels) * size_t(channels));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-4.0f, 4.0f);
+    for (float& v : px)
+    {
+        v = std::exp2(u(rng));
+    }
+    return px;
+}
+
+int AllThreads()
+{
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+Light L(const char* n)
+{
+    return {n, BuiltinIlluminant(n)};
+}
+}  // namespace
+
+std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
+                                 const std::string& workingSpace, long pixels)
+{
+    const RgbSpace& ws = FindRgbSpace(workingSpace);
+    std::vector<CostRow> rows;
+    const std::vector<float> source = TestPixels(pixels, 4);
+    const int rgb[3] = {0, 1, 2};
+    for (const std::string& name : methods)
+    {
+        const MethodSpec method = ParseMethod(name);
+        if (method.method == ChangeMethod::SPECTRAL)
+        {
+            // The exact answer needs a spectrum per pixel: 81 samples through
+            // the 3 × 81 (illuminant × matching functions) weights.
+            const SurfaceRenderer r(BuiltinIlluminant("D65"), ws);
+            const long n = std::min<long>(pixels, 1 << 20);
+            Eigen::MatrixXf spectra = Eigen::MatrixXf::Random(SurfaceRenderer::kSamples, n);
+            const Eigen::Matrix<float, 3, SurfaceRenderer::kSamples> a = r.matrix().cast<float>();
+            for (int threads : {1, AllThreads()})
+            {
+                Eigen::MatrixXf out(3, n);
+                const double s = BestSeconds(
+                    [&]
+                    {
+                        std::vector<std::thread> pool;
+                        const long chunk = (n + threads - 1) / threads;
+                        for (int t = 0; t < threads; ++t)
+                        {
+                            const long b = chunk * t, e = std::min(n, b + chunk);
+                            pool.emplace_back(
+                                [&, b, e] {
+                                    out.middleCols(b, e - b).noalias() =
+                                        a * spectra.middleCols(b, e - b);
+                                });
+                        }
+                        for (auto& th : pool)
+                        {
+                            th.join();
+                        }
+                    });
+                rows.push_back({name, "spectral-81", threads, s * 1e9 / double(n)});
+            }
+            continue;
+        }
+        const OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(L("A"), L("D65"), method, ws);
+        const OCIO::ConstCPUProcessorRcPtr cpu =
+            OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
+                OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
+        for (int threads : {1, AllThreads()})
+        {
+            std::vector<float> px = source;
+            const double s = BestSeconds(
+                [&] { ApplyToBuffer(cpu, px.data(), 1920, pixels / 1920, 4, rgb, threads); });
+            rows.push_back({name, method.isLinear() ? "ocio-matrix" : "ocio-lut33", threads,
+                            s * 1e9 / double(pixels)});
+        }
+        if (!method.isLinear())
+        {
+            const Relighter direct(L("A"), L("D65"), method, ws);
+            const long n = std::min<long>(pixels, 20000);
+            for (int threads : {1, AllThreads()})
+            {
+                std::vector<float> px(size_t(n) * 3);
+                const double s = BestSeconds(
+                    [&]
+                    {
+                        for (long i = 0; i < n; ++i)
+                        {
+                            std::copy_n(&source[size_t(i) * 4], 3, &px[size_t(i) * 3]);
+                        }
+                        direct.apply(px.data(), size_t(n), threads);
+                    },
+                    1);
+                rows.push_back({name, "direct-fit", threads, s * 1e9 / double(n)});
+            }
+        }
+    }
+    return rows;
+}
+
+std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)
+{
+    const RgbSpace& ws = FindRgbSpace(workingSpace);
+    std::vector<SetupCost> out;
+    out.push_back(
+        {"fit3x3: fitting one pair (108 training remittances)",
+         BestSeconds([&]
+                     { IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("fit3x3"), ws); })});
+    const Relighter up(L("A"), L("D65"), ParseMethod("upsample"), ws);
+    for (int size : {17, 33, 65})
+    {
+        out.push_back({"upsample: baking a " + std::to_string(size) + "^3 LUT, all threads",
+                       BestSeconds(
+                           [&]
+                           {
+                               BakeLattice([&](float* p, size_t n) { up.apply(p, n); },
+                                           ShaperSpec::ForNonLinear(), size, true);
+                           },
+                           1)});
+    }
+    return out;
+}
+
+}  // namespace bandlight::cli

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bandlight::cli
+{
+
+/// What applying a method to pixels costs on this machine.
+struct CostRow
+{
+    std::string method;
+    std::string form;  ///< "ocio-matrix", "ocio-lut33", "direct-fit", "spectral-81"
+    int threads = 1;
+    double nsPerPixel = 0.0;
+};
+
+/// One-off costs: fitting, LUT baking.
+struct SetupCost
+{
+    std::string what;
+    double seconds = 0.0;
+};
+
+/// Times every method applied to a float RGBA buffer of `pixels` pixels on
+/// one thread and on all threads (best of three runs; `pixels` a multiple
+/// of 1920, the rows of the buffer): linear methods and
+/// upsample (as its 33³ LUT) through the OCIO CPU processor, upsample's
+/// per-pixel fit directly, and `spectral` as the 3 × 81 integration a
+/// spectral image would need per pixel.
+std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
+                                 const std::string& workingSpace, long pixels);
+
+/// Fitting fit3x3 and baking upsample LUTs at 17³, 33³ and 65³ (A → D65).
+std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace);
+
+}  // namespace bandlight::cli
