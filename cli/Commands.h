@@ -15,5 +15,6 @@ void AddLutCommand(CLI::App& app);
 void AddApplyCommand(CLI::App& app);
 void AddPackageCommand(CLI::App& app);
 void AddAccuracyCommand(CLI::App& app);
+void AddPlotCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddApplyCommand(app);
     bandlight::cli::AddPackageCommand(app);
     bandlight::cli::AddAccuracyCommand(app);
+    bandlight::cli::AddPlotCommand(app);
     try
     {
         app.parse(argc, argv);

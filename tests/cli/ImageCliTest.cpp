@@ -305,3 +305,46 @@ TEST_CASE("Bad input: one line, exit code 2, nothing half-written", "[cli]")
     const Result left = Sh("ls '" + Temp("") + "'* | grep -c '\\.tmp-' || true");
     CHECK(left.out == "0\n");
 }
+
+TEST_CASE("accuracy writes the documented JSON and a plot, with progress", "[cli][accuracy]")
+{
+    const std::string json = Temp("accuracy.json"), png = Temp("accuracy.png");
+    const Result r = Bandlight(
+        "accuracy --illuminants A,F11,D65 --methods bradford,band3,upsample "
+        "--json '" +
+        json + "' --plot '" + png + "'");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.err, Contains("100% of pairs done"));
+    CHECK_THAT(r.out, Contains("bradford"));
+    std::ifstream in(json);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string j = text.str();
+    for (const char* key :
+         {"\"rows\"", "\"method\"", "\"from\"", "\"to\"", "\"set\"", "\"mean\"", "\"p95\"",
+          "\"max\"", "\"worst_sample\"", "\"cost\"", "\"ns_per_pixel\"", "\"threads\""})
+    {
+        CHECK_THAT(j, Contains(key));
+    }
+    std::ifstream img(png, std::ios::binary);
+    char magic[4] = {};
+    img.read(magic, 4);
+    CHECK(std::string(magic + 1, 3) == "PNG");
+}
+
+TEST_CASE("plot draws the lecture's pictures", "[cli]")
+{
+    for (const char* what : {"--cmf", "--illuminant F11", "--reflectance TCS09"})
+    {
+        const std::string out = Temp("plot.svg");
+        std::remove(out.c_str());
+        const Result r = Bandlight(std::string("plot ") + what + " -o '" + out + "'");
+        INFO(what << ": " << r.err);
+        CHECK(r.code == 0);
+        CHECK(Exists(out));
+    }
+    const Result bad = Bandlight("plot --cmf -o '" + Temp("plot.gif") + "'");
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.err, Contains("plots are written as .png or .svg"));
+}
