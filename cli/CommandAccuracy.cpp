@@ -240,12 +240,15 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     const std::vector<std::pair<std::string, std::string>> lecturePairs = {
         {"A", "D65"}, {"F2", "D65"}, {"F11", "D65"}};
     std::map<std::string, double> plotError;
-    std::cout << "Re-lighting accuracy, CIEDE2000 against the spectral answer ("
+    // With --json - stdout carries the JSON alone.
+    std::ostringstream table;
+    std::ostream& out = o.json == "-" ? table : std::cout;
+    out << "Re-lighting accuracy, CIEDE2000 against the spectral answer ("
               << options.lights.size() << " illuminants, " << pairs << " ordered pairs, "
               << FindRgbSpace(o.workingSpace).displayName << ")\n";
     for (const ReflectanceSet& set : options.sets)
     {
-        std::cout << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
+        out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
                   << "  method       mean    p95     max   worst sample and pair     "
                      "A/F2/F11->D65 mean   ns/pixel\n";
         for (const std::string& m : options.methods)
@@ -260,12 +263,12 @@ void RunAccuracy(const AccuracyCommandOptions& o)
             std::snprintf(line, sizeof line, "  %-10s %6.2f %6.2f %7.2f   %-26s %8.2f   %10s\n",
                           m.c_str(), all.mean, all.p95, all.max, all.worst.c_str(), lecture.mean,
                           costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
-            std::cout << line;
+            out << line;
         }
     }
     if (!cost.empty())
     {
-        std::cout << "\ncost per pixel, 1920x1080 float RGBA (best of 3)\n";
+        out << "\ncost per pixel, 1920x1080 float RGBA (best of 3)\n";
         for (const CostRow& c : cost)
         {
             char line[160];
@@ -273,11 +276,11 @@ void RunAccuracy(const AccuracyCommandOptions& o)
                           "  %-10s %-12s %d thread%s %10.2f ns  %8.1f Mpixel/s\n", c.method.c_str(),
                           c.form.c_str(), c.threads, c.threads > 1 ? "s" : " ", c.nsPerPixel,
                           1e3 / c.nsPerPixel);
-            std::cout << line;
+            out << line;
         }
         for (const SetupCost& s : setup)
         {
-            std::cout << "  one-off: " << s.what << ": " << Fixed(s.seconds, 3) << " s\n";
+            out << "  one-off: " << s.what << ": " << Fixed(s.seconds, 3) << " s\n";
         }
     }
 
