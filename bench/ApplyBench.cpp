@@ -12,6 +12,8 @@
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 
@@ -115,5 +117,83 @@ static void BM_ApplyLattice33(benchmark::State& state)
     Report(state);
 }
 BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// upsample as applied to images: log2 shaper, 33³ LUT baked from the
+/// per-pixel spectral fit, inverse shaper.
+static void BM_ApplyUpsampleLut33(benchmark::State& state)
+{
+    const auto cpu = OCIO::Config::CreateRaw()
+                         ->getProcessor(IlluminantChangeTransform(
+                             {"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
+                             ParseMethod("upsample"), FindRgbSpace("acescg")))
+                         ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                    OCIO::OPTIMIZATION_DEFAULT);
+    std::vector<float> px = Image();
+    const int rgb[3] = {0, 1, 2};
+    for (auto _ : state)
+    {
+        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
+        benchmark::ClobberMemory();
+    }
+    Report(state);
+}
+BENCHMARK(BM_ApplyUpsampleLut33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// upsample's per-pixel fit itself (what the LUT saves), on 20000 pixels.
+static void BM_UpsampleDirectFit(benchmark::State& state)
+{
+    const Relighter relight({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
+                            ParseMethod("upsample"), FindRgbSpace("acescg"));
+    std::vector<float> src(20000 * 3);
+    for (size_t i = 0; i < src.size(); ++i)
+    {
+        src[i] = 0.05f + 0.9f * float((i * 2654435761u) % 1000u) / 1000.0f;
+    }
+    for (auto _ : state)
+    {
+        std::vector<float> px = src;
+        relight.apply(px.data(), 20000, int(state.range(0)));
+        benchmark::DoNotOptimize(px.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * 20000);
+}
+BENCHMARK(BM_UpsampleDirectFit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The exact answer for a spectral image: 81 samples per pixel through the
+/// 3 × 81 (illuminant × matching functions) weights, 1 Mpixel.
+static void BM_SpectralIntegration81(benchmark::State& state)
+{
+    const SurfaceRenderer r(BuiltinIlluminant("D65"), FindRgbSpace("acescg"));
+    const Eigen::Matrix<float, 3, SurfaceRenderer::kSamples> a = r.matrix().cast<float>();
+    const long n = 1 << 20;
+    const Eigen::MatrixXf spectra = Eigen::MatrixXf::Random(SurfaceRenderer::kSamples, n);
+    Eigen::MatrixXf out(3, n);
+    for (auto _ : state)
+    {
+        out.noalias() = a * spectra;
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+}
+BENCHMARK(BM_SpectralIntegration81)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// One-off: baking upsample's LUT (all threads).
+static void BM_BakeUpsampleLut(benchmark::State& state)
+{
+    const Relighter relight({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
+                            ParseMethod("upsample"), FindRgbSpace("acescg"));
+    for (auto _ : state)
+    {
+        benchmark::DoNotOptimize(BakeLattice([&](float* p, size_t n) { relight.apply(p, n); },
+                                             ShaperSpec::ForNonLinear(), int(state.range(0)),
+                                             true));
+    }
+}
+BENCHMARK(BM_BakeUpsampleLut)
+    ->Arg(17)
+    ->Arg(33)
+    ->Arg(65)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK_MAIN();
