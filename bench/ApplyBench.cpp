@@ -51,6 +51,21 @@ OCIO::ConstCPUProcessorRcPtr Processor(bool lattice)
         OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
 }
 
+void Report(benchmark::State& state);
+
+/// Applies `cpu` to the UHD image on state.range(0) threads, per iteration.
+void ApplyImage(benchmark::State& state, const OCIO::ConstCPUProcessorRcPtr& cpu)
+{
+    std::vector<float> px = Image();
+    const int rgb[3] = {0, 1, 2};
+    for (auto _ : state)
+    {
+        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
+        benchmark::ClobberMemory();
+    }
+    Report(state);
+}
+
 void Report(benchmark::State& state)
 {
     state.SetItemsProcessed(int64_t(state.iterations()) * kWidth * kHeight);
@@ -91,30 +106,14 @@ BENCHMARK(BM_Memcpy)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime
 /// The band3 A → D65 look as OCIO applies it: one 3×3 matrix per pixel.
 static void BM_ApplyMatrix(benchmark::State& state)
 {
-    const auto cpu = Processor(false);
-    std::vector<float> px = Image();
-    const int rgb[3] = {0, 1, 2};
-    for (auto _ : state)
-    {
-        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
-        benchmark::ClobberMemory();
-    }
-    Report(state);
+    ApplyImage(state, Processor(false));
 }
 BENCHMARK(BM_ApplyMatrix)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The same as a 33³ LUT with the log2 shaper (shaper, tetrahedral 3D LUT, inverse shaper).
 static void BM_ApplyLattice33(benchmark::State& state)
 {
-    const auto cpu = Processor(true);
-    std::vector<float> px = Image();
-    const int rgb[3] = {0, 1, 2};
-    for (auto _ : state)
-    {
-        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
-        benchmark::ClobberMemory();
-    }
-    Report(state);
+    ApplyImage(state, Processor(true));
 }
 BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -122,20 +121,11 @@ BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Use
 /// per-pixel spectral fit, inverse shaper.
 static void BM_ApplyUpsampleLut33(benchmark::State& state)
 {
-    const auto cpu = OCIO::Config::CreateRaw()
-                         ->getProcessor(IlluminantChangeTransform(
-                             {"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                             ParseMethod("upsample"), FindRgbSpace("acescg")))
-                         ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                    OCIO::OPTIMIZATION_DEFAULT);
-    std::vector<float> px = Image();
-    const int rgb[3] = {0, 1, 2};
-    for (auto _ : state)
-    {
-        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
-        benchmark::ClobberMemory();
-    }
-    Report(state);
+    const OCIO::GroupTransformRcPtr t =
+        IlluminantChangeTransform({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
+                                  ParseMethod("upsample"), FindRgbSpace("acescg"));
+    ApplyImage(state, OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
+                          OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT));
 }
 BENCHMARK(BM_ApplyUpsampleLut33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

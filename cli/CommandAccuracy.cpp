@@ -36,20 +36,6 @@ struct AccuracyCommandOptions
     bool noCost = false;
 };
 
-std::vector<std::string> Split(const std::string& text)
-{
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string s; std::getline(in, s, ',');)
-    {
-        if (!s.empty())
-        {
-            out.push_back(s);
-        }
-    }
-    return out;
-}
-
 /// Per method over all pairs: the mean of the pairs' means, the 95th
 /// percentile of the pairs' 95th percentiles, the max, and where it is.
 struct Summary
@@ -160,7 +146,7 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     if (!o.illuminants.empty())
     {
         options.lights.clear();
-        for (const std::string& name : Split(o.illuminants))
+        for (const std::string& name : SplitList(o.illuminants))
         {
             const NamedSpectrum s = ResolveIlluminant(name);
             options.lights.push_back({s.name, s.spectrum});
@@ -172,7 +158,7 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     }
     if (!o.methods.empty())
     {
-        options.methods = Split(o.methods);
+        options.methods = SplitList(o.methods);
     }
     options.methods.push_back("spectral");
     for (const std::string& m : options.methods)
@@ -243,14 +229,14 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     // With --json - stdout carries the JSON alone.
     std::ostringstream table;
     std::ostream& out = o.json == "-" ? table : std::cout;
-    out << "Re-lighting accuracy, CIEDE2000 against the spectral answer ("
-              << options.lights.size() << " illuminants, " << pairs << " ordered pairs, "
-              << FindRgbSpace(o.workingSpace).displayName << ")\n";
+    out << "Re-lighting accuracy, CIEDE2000 against the spectral answer (" << options.lights.size()
+        << " illuminants, " << pairs << " ordered pairs, "
+        << FindRgbSpace(o.workingSpace).displayName << ")\n";
     for (const ReflectanceSet& set : options.sets)
     {
         out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
-                  << "  method       mean    p95     max   worst sample and pair     "
-                     "A/F2/F11->D65 mean   ns/pixel\n";
+            << "  method       mean    p95     max   worst sample and pair     "
+               "A/F2/F11->D65 mean   ns/pixel\n";
         for (const std::string& m : options.methods)
         {
             const Summary all = Summarise(rows, m, set.name);

@@ -26,20 +26,6 @@ struct ConfigCommandOptions
     std::string observer;
 };
 
-std::vector<std::string> SplitList(const std::string& text)
-{
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-    {
-        if (!item.empty())
-        {
-            out.push_back(item);
-        }
-    }
-    return out;
-}
-
 void RunConfig(const ConfigCommandOptions& o)
 {
     ConfigOptions options;

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "plugin/OcioTransforms.h"
 #include "spectral/Exception.h"
@@ -103,6 +104,20 @@ OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bo
     }
     return IlluminantChangeTransform({from.name, from.spectrum}, {to.name, to.spectrum}, method,
                                      working);
+}
+
+std::vector<std::string> SplitList(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+    {
+        if (!item.empty())
+        {
+            out.push_back(item);
+        }
+    }
+    return out;
 }
 
 std::string Fixed(double v, int decimals)

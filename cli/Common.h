@@ -41,6 +41,9 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
 /// the linear methods), and whether it is a plain matrix.
 OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bool* isMatrix);
 
+/// Splits "a,b,c" into its non-empty items.
+std::vector<std::string> SplitList(const std::string& text);
+
 /// Formats a double with `decimals` places for tables.
 std::string Fixed(double v, int decimals);
 

@@ -11,51 +11,24 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/RunCommand.h"
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;
 
+using test::Bandlight;
+using test::Result;
+using test::Sh;
+using test::TempPath;
+
 namespace
 {
-
-struct Result
+Result Run(const std::string& args)
 {
-    int code = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string TempPath(const std::string& name)
-{
-    const char* dir = std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/bandlight_cli_test_" + name;
+    return Bandlight(args);
 }
-
-/// Runs a shell command line; captures stdout, stderr and the exit code.
-Result Run(const std::string& args, const std::string& exe = BANDLIGHT_EXE)
-{
-    const std::string errFile = TempPath("stderr.txt");
-    const std::string cmd = "'" + exe + "' " + args + " 2>'" + errFile + "'";
-    Result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    REQUIRE(p);
-    char buf[4096];
-    size_t n = 0;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0)
-    {
-        r.out.append(buf, n);
-    }
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(errFile);
-    std::stringstream s;
-    s << e.rdbuf();
-    r.err = s.str();
-    return r;
-}
-
 }  // namespace
 
 TEST_CASE("tables --json has the documented shape", "[cli]")
@@ -180,9 +153,8 @@ TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli
     {
         const std::string out = TempPath(std::string("tcs_") + illuminant + ".ti3");
         std::remove(out.c_str());
-        const Result argyll =
-            Run(std::string("-n -i ") + illuminant + " -o 1931_2 '" + ti3 + "' '" + out + "'",
-                SPEC2CIE_EXE);
+        const Result argyll = Sh(std::string("'") + SPEC2CIE_EXE + "' -n -i " + illuminant +
+                                 " -o 1931_2 '" + ti3 + "' '" + out + "'");
         REQUIRE(argyll.code == 0);
         // Pull SAMPLE_ID and XYZ_X/Y/Z out of spec2cie's CGATS output.
         std::ifstream in(out);

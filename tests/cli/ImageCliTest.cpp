@@ -12,49 +12,22 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
+
 #include <catch2/catch.hpp>
+#include "cli/RunCommand.h"
 
 using Catch::Matchers::Contains;
 
 namespace
 {
 
-struct Result
-{
-    int code = -1;
-    std::string out;
-    std::string err;
-};
+using bandlight::test::Bandlight;
+using bandlight::test::Result;
+using bandlight::test::Sh;
 
 std::string Temp(const std::string& name)
 {
-    const char* dir = std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/bandlight_image_test_" + name;
-}
-
-Result Sh(const std::string& cmd)
-{
-    const std::string errFile = Temp("stderr.txt");
-    Result r;
-    FILE* p = popen((cmd + " 2>'" + errFile + "'").c_str(), "r");
-    REQUIRE(p);
-    char buf[4096];
-    for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;)
-    {
-        r.out.append(buf, n);
-    }
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(errFile);
-    std::stringstream s;
-    s << e.rdbuf();
-    r.err = s.str();
-    return r;
-}
-
-Result Bandlight(const std::string& args)
-{
-    return Sh(std::string("'") + BANDLIGHT_EXE + "' " + args);
+    return bandlight::test::TempPath("image_" + name);
 }
 
 bool Exists(const std::string& path)

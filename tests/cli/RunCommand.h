@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Running the bandlight command (or a host tool) from a test.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+namespace bandlight::test
+{
+
+struct Result
+{
+    int code = -1;
+    std::string out;
+    std::string err;
+};
+
+/// A path in the temporary folder, prefixed so tests do not collide.
+inline std::string TempPath(const std::string& name)
+{
+    const char* dir = std::getenv("TMPDIR");
+    return std::string(dir ? dir : "/tmp") + "/bandlight_test_" + name;
+}
+
+/// Runs a shell command line; captures stdout, stderr and the exit code.
+inline Result Sh(const std::string& command)
+{
+    const std::string errFile = TempPath("stderr.txt");
+    Result r;
+    FILE* p = popen((command + " 2>'" + errFile + "'").c_str(), "r");
+    REQUIRE(p);
+    char buf[4096];
+    for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;)
+    {
+        r.out.append(buf, n);
+    }
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    std::stringstream s;
+    s << e.rdbuf();
+    r.err = s.str();
+    return r;
+}
+
+/// Runs bandlight with the given arguments.
+inline Result Bandlight(const std::string& args)
+{
+    return Sh(std::string("'") + BANDLIGHT_EXE + "' " + args);
+}
+
+}  // namespace bandlight::test
