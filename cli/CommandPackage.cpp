@@ -77,24 +77,6 @@ std::vector<float> RenderChart(const Spectrum& illuminant, const RgbSpace& worki
     return px;
 }
 
-void WriteImage(const std::string& path, const std::vector<float>& px, int width, int height,
-                const OIIO::TypeDesc& type, const std::string& colorSpace)
-{
-    OIIO::ImageSpec spec(width, height, 4, type);
-    spec.attribute("oiio:ColorSpace", colorSpace);
-    spec.attribute("Software", "bandlight");
-    AtomicFile file(path);
-    file.stream().close();
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out || !out->open(file.tempPath(), spec) ||
-        !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
-    {
-        throw Exception(path +
-                        ": cannot write image: " + (out ? out->geterror() : OIIO::geterror()));
-    }
-    file.commit();
-}
-
 void RunPackage(const std::string& dir)
 {
     ConfigOptions options;
@@ -136,10 +118,12 @@ void RunPackage(const std::string& dir)
               << " methods), working space " << workingName << "\n";
     for (const Output& o : outputs)
     {
-        WriteImage(dir + "/" + o.name + ".exr", o.pixels, w, h, OIIO::TypeDesc::HALF, workingName);
+        WriteImage(dir + "/" + o.name + ".exr", o.pixels.data(), w, h, 4, {"R", "G", "B", "A"},
+                   workingName, OIIO::TypeDesc::HALF);
         std::vector<float> preview = o.pixels;
         ApplyToBuffer(toSrgb, preview.data(), w, h, 4, rgb, 0);
-        WriteImage(dir + "/" + o.name + ".png", preview, w, h, OIIO::TypeDesc::UINT8, "sRGB");
+        WriteImage(dir + "/" + o.name + ".png", preview.data(), w, h, 4, {"R", "G", "B", "A"},
+                   "sRGB", OIIO::TypeDesc::UINT8);
         std::cout << "Wrote " << dir << "/" << o.name << ".exr (" << workingName
                   << ") and .png (sRGB preview)\n";
     }

@@ -16,5 +16,6 @@ void AddApplyCommand(CLI::App& app);
 void AddPackageCommand(CLI::App& app);
 void AddAccuracyCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
+void AddRenderCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -139,6 +139,40 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
     file.commit();
 }
 
+void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
+                const std::vector<std::string>& channelNames, const std::string& colorSpace,
+                OIIO::TypeDesc type)
+{
+    OIIO::ImageSpec spec(width, height, channels, type);
+    if (int(channelNames.size()) == channels)
+    {
+        spec.channelnames = channelNames;
+    }
+    spec.alpha_channel = -1;
+    for (int c = 0; c < channels; ++c)
+    {
+        if (spec.channelnames[size_t(c)] == "A")
+        {
+            spec.alpha_channel = c;
+        }
+    }
+    spec.attribute("oiio:ColorSpace", colorSpace);
+    spec.attribute("Software", "bandlight");
+    AtomicFile file(path);
+    file.stream().close();  // OIIO writes by name
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out)
+    {
+        throw Exception(path + ": no image writer for this file type: " + OIIO::geterror());
+    }
+    if (!out->open(file.tempPath(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
+        !out->close())
+    {
+        throw Exception(path + ": cannot write image: " + out->geterror());
+    }
+    file.commit();
+}
+
 bool HasFramePattern(const std::string& pattern)
 {
     return pattern.find('#') != std::string::npos ||

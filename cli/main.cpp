@@ -25,6 +25,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddPackageCommand(app);
     bandlight::cli::AddAccuracyCommand(app);
     bandlight::cli::AddPlotCommand(app);
+    bandlight::cli::AddRenderCommand(app);
     try
     {
         app.parse(argc, argv);

@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include "transforms/Scene.h"
+
+namespace bandlight::cli
+{
+
+/// Reads a YAML scene (format: docs/scenes.md). Every error — unknown key,
+/// wrong type, negative size, missing file, unknown name — is an Exception
+/// "FILE:LINE: what" pointing at the offending YAML. Relative spectrum file
+/// paths are relative to the scene file.
+Scene ReadSceneFile(const std::string& path);
+
+}  // namespace bandlight::cli

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "transforms/Scene.h"
+
+#include <algorithm>
+
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+
+bool SceneSpectrum::isZero() const noexcept
+{
+    const auto& v = continuous.values();
+    const bool flatZero = std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+    const bool noLines = std::all_of(lines.lines().begin(), lines.lines().end(),
+                                     [](const SpectralLine& l) { return l.power == 0.0; });
+    return flatZero && noLines;
+}
+
+Spectrum StepSpectrum(const BandSet& bands, const std::vector<double>& values)
+{
+    // 1 nm samples so band edges fall on samples; a sample at λ belongs to
+    // the band with a ≤ λ < b, as the lecture's band means count them.
+    std::vector<double> v(471, 0.0);
+    for (size_t i = 0; i < v.size(); ++i)
+    {
+        const double l = 360.0 + double(i);
+        for (size_t b = 0; b < bands.size(); ++b)
+        {
+            if (l >= bands[b].minNm && l < bands[b].maxNm)
+            {
+                v[i] = values[b];
+            }
+        }
+    }
+    return Spectrum(360.0, 1.0, std::move(v));
+}
+
+Spectrum ConstantRemittance(double value)
+{
+    return Spectrum::Constant(360.0, 5.0, 95, value);
+}
+
+const std::vector<std::string>& LectureMaterialNames()
+{
+    static const std::vector<std::string> names = {
+        "copper", "gold", "silver", "aluminium", "tin", "matte lacquer", "gloss lacquer"};
+    return names;
+}
+
+SceneMaterial LectureMaterial(const std::string& name)
+{
+    // SPEC §1.3 (components R, G, B; here in band order VB, VG, VR).
+    struct Row
+    {
+        const char* name;
+        double n;
+        double diff[3];  // R, G, B
+        double spek[3];
+    };
+    // clang-format off
+    static const Row table[] = {
+        {"copper",        2,  {1.0, 0.5, 0.4}, {0.9, 0.7, 0.3}},
+        {"gold",          32, {0.5, 0.5, 0.0}, {1.0, 1.0, 0.0}},
+        {"silver",        32, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}},
+        {"aluminium",     4,  {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}},
+        {"tin",           8,  {0.8, 0.8, 0.8}, {1.0, 1.0, 1.0}},
+        {"matte lacquer", 8,  {0.0, 1.0, 1.0}, {1.0, 1.0, 1.0}},
+        {"gloss lacquer", 64, {1.0, 1.0, 0.0}, {1.0, 1.0, 1.0}},
+    };
+    // clang-format on
+    for (const Row& r : table)
+    {
+        if (name == r.name)
+        {
+            const BandSet bands = BandSet::Lecture();
+            const std::vector<double> diff = {r.diff[2], r.diff[1], r.diff[0]};
+            const std::vector<double> spek = {r.spek[2], r.spek[1], r.spek[0]};
+            SceneMaterial m;
+            m.name = r.name;
+            m.exponent = r.n;
+            m.diffuse = {std::string(r.name) + " R_diff", StepSpectrum(bands, diff), {}};
+            m.ambient = {std::string(r.name) + " R_amb", StepSpectrum(bands, diff), {}};
+            m.specular = {std::string(r.name) + " R_spek", StepSpectrum(bands, spek), {}};
+            return m;
+        }
+    }
+    throw Exception("unknown lecture material '" + name +
+                    "' (copper, gold, silver, aluminium, tin, matte lacquer, gloss lacquer)");
+}
+
+}  // namespace bandlight

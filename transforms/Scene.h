@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "spectral/Colorimetry.h"
+#include "spectral/Spectrum.h"
+#include "transforms/BandSet.h"
+
+namespace bandlight
+{
+
+/// Light or remittance as the scene gives it: a sampled spectrum, emission
+/// lines, or both (a band-valued one is a step spectrum over its bands).
+struct SceneSpectrum
+{
+    std::string name;  ///< what it was given as ("D65", "TCS09", "bands 0.4,0.5,1"): lights
+                       ///< with the same name share one spectral term
+    Spectrum continuous;
+    LineSpectrum lines;
+
+    bool isZero() const noexcept;
+    bool hasLines() const noexcept { return !lines.empty(); }
+};
+
+/// A step spectrum with value v[b] over band b (zero outside): how band
+/// values enter spectral mode.
+Spectrum StepSpectrum(const BandSet& bands, const std::vector<double>& values);
+
+/// A constant remittance over the visible range.
+Spectrum ConstantRemittance(double value);
+
+struct SceneLight
+{
+    enum class Kind
+    {
+        AMBIENT,
+        POINT,
+        DIRECTIONAL,
+    };
+    Kind kind = Kind::POINT;
+    SceneSpectrum spectrum;  ///< scaled so its largest band mean is 1 (the lecture's I)
+    double intensity = 1.0;
+    Vec3 position = Vec3::Zero();     ///< POINT
+    Vec3 direction = Vec3(0, -1, 0);  ///< DIRECTIONAL: the direction the light travels
+    /// f_att = 1 / (c1 + c2·d + c3·d²), capped at 1; (1, 0, 0) is none.
+    Vec3 attenuation = Vec3(1, 0, 0);
+
+    bool attenuates() const noexcept { return attenuation != Vec3(1, 0, 0); }
+};
+
+/// The compact Phong material of SPEC §1.3: R_amb, R_diff, R_spek and n
+/// (the full form k_a·O_a, k_d·O_d, k_s·O_s is folded into these).
+struct SceneMaterial
+{
+    std::string name;
+    SceneSpectrum ambient;
+    SceneSpectrum diffuse;
+    SceneSpectrum specular;
+    /// R_amb* of the single-source form I = I_0 (R_amb* + R_diff cos α +
+    /// R_spek cosⁿψ): an ambient term lit by the scene's one direct light.
+    SceneSpectrum ambientStar;
+    double exponent = 1.0;
+};
+
+/// The lecture's material table (SPEC §1.3), as band values over VB/VG/VR:
+/// copper, gold, silver, aluminium, tin, matte lacquer, gloss lacquer.
+/// R_amb is taken equal to R_diff. Throws Exception for another name.
+SceneMaterial LectureMaterial(const std::string& name);
+const std::vector<std::string>& LectureMaterialNames();
+
+struct Sphere
+{
+    Vec3 center;
+    double radius = 1.0;
+    int material = 0;
+};
+
+struct Plane
+{
+    Vec3 point;
+    Vec3 normal = Vec3(0, 1, 0);
+    int material = 0;
+};
+
+struct Camera
+{
+    Vec3 position = Vec3(0, 0, 5);
+    Vec3 lookAt = Vec3::Zero();
+    Vec3 up = Vec3(0, 1, 0);
+    double fovDeg = 40.0;
+    int width = 320;
+    int height = 240;
+};
+
+struct RenderSettings
+{
+    enum class Mode
+    {
+        BAND,
+        SPECTRAL,
+    };
+    Mode mode = Mode::BAND;
+    BandSet bands = BandSet::Lecture();
+    double stepNm = 0.0;            ///< spectral grid; 0: chosen by the planner
+    std::string output = "acescg";  ///< a working space, or "bands" (band mode: band values)
+};
+
+struct Scene
+{
+    Camera camera;
+    std::vector<SceneLight> lights;
+    std::vector<SceneMaterial> materials;
+    std::vector<Sphere> spheres;
+    std::vector<Plane> planes;
+    RenderSettings settings;
+};
+
+}  // namespace bandlight
