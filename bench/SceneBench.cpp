@@ -81,33 +81,16 @@ BENCHMARK(BM_RenderLights)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-/// The literal path (per pixel, per light, per sample) against spectral samples:
-/// what planning saves.
-static void BM_RenderUnplannedSamples(benchmark::State& state)
+/// Cost against spectral samples, 480×270: the literal path (per pixel, per
+/// light, per sample; range(1) = 0) against the planned one (range(1) = 1).
+static void BM_RenderSamples(benchmark::State& state)
 {
     Render(state,
            MaterialScene(1, RenderSettings::Mode::SPECTRAL, double(state.range(0)), 480, 270),
-           false);
+           state.range(1) != 0);
 }
-BENCHMARK(BM_RenderUnplannedSamples)
-    ->Arg(20)
-    ->Arg(10)
-    ->Arg(5)
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-
-static void BM_RenderPlannedSamples(benchmark::State& state)
-{
-    Render(state,
-           MaterialScene(1, RenderSettings::Mode::SPECTRAL, double(state.range(0)), 480, 270),
-           true);
-}
-BENCHMARK(BM_RenderPlannedSamples)
-    ->Arg(20)
-    ->Arg(10)
-    ->Arg(5)
-    ->Arg(1)
+BENCHMARK(BM_RenderSamples)
+    ->ArgsProduct({{20, 10, 5, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "transforms/SceneColour.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/LU>
+
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/BandModel.h"
+
+namespace bandlight::detail
+{
+
+// ---------------------------------------------------------------------------
+// Colour. A light is scaled so its largest band mean is 1 (the lecture's I).
+// The stimulus φ = light × remittance becomes CIE XYZ divided by N_y, the
+// integral of ȳ over the bands: an equal-energy light of band value 1 on a
+// white surface has Y = 1. Band mode gets the same XYZ from the lecture's
+// row-normalised band matrix B: XYZ = diag(N) / N_y · B · (I ⊙ R), N_k the
+// band integral of each matching function (B's row normaliser).
+
+Output MakeOutput(const Scene& s)
+{
+    Output o;
+    if (s.settings.output == "bands")
+    {
+        if (s.settings.mode != RenderSettings::Mode::BAND)
+        {
+            throw Exception("output 'bands' needs band mode: spectral mode has no bands to write");
+        }
+        o.bands = true;
+        o.channels = int(s.settings.bands.size());
+        for (const Band& b : s.settings.bands)
+        {
+            o.names.push_back(b.name);
+        }
+        return o;
+    }
+    o.xyzToRgb = RgbToXyzMatrix(FindRgbSpace(s.settings.output).chromaticities).inverse();
+    o.names = {"R", "G", "B"};
+    return o;
+}
+
+/// Band means of a light or remittance (lines count in their band).
+std::vector<double> Means(const SceneSpectrum& s, const BandSet& bands)
+{
+    std::vector<double> m(bands.size(), 0.0);
+    if (!s.continuous.empty())
+    {
+        m = BandMeans(s.continuous, bands);
+    }
+    if (s.hasLines())
+    {
+        const std::vector<double> l = BandMeans(s.lines, bands);
+        for (size_t b = 0; b < m.size(); ++b)
+        {
+            m[b] += l[b];
+        }
+    }
+    return m;
+}
+
+double LightScale(const SceneSpectrum& s, const BandSet& bands)
+{
+    const std::vector<double> m = Means(s, bands);
+    const double peak = *std::max_element(m.begin(), m.end());
+    if (!(peak > 0.0))
+    {
+        throw Exception("light '" + s.name + "' has no power in bands " + bands.describe());
+    }
+    return 1.0 / peak;
+}
+
+Grid MakeGrid(double step)
+{
+    // 360–830 nm, the matching functions' range.
+    return {step, int(std::floor((830.0 - 360.0) / step + 1e-9)) + 1};
+}
+
+namespace
+{
+Vec3 CmfNorm(const BandSet& bands)
+{
+    const MatchingFunctions& cmf = GetMatchingFunctions(Observer::CIE1931_2DEG);
+    Vec3 n;
+    const Spectrum* f[3] = {&cmf.x, &cmf.y, &cmf.z};
+    for (int k = 0; k < 3; ++k)
+    {
+        const std::vector<double> m = BandMeans(*f[k], bands);
+        double s = 0.0;
+        for (size_t b = 0; b < bands.size(); ++b)
+        {
+            s += m[b] * bands[b].width();
+        }
+        n(k) = s;
+    }
+    return n;
+}
+
+}  // namespace
+
+Cmf MakeCmf(const Grid& g, const BandSet& bands)
+{
+    const MatchingFunctions& cmf = GetMatchingFunctions(Observer::CIE1931_2DEG);
+    Cmf c;
+    c.norm = CmfNorm(bands);
+    for (int i = 0; i < g.count; ++i)
+    {
+        const double l = g.wavelength(i);
+        c.weight.push_back(Vec3(cmf.x(l), cmf.y(l), cmf.z(l)) * (g.step / c.norm.y()));
+    }
+    return c;
+}
+
+std::vector<double> Sample(const Spectrum& s, const Grid& g)
+{
+    std::vector<double> v(size_t(g.count));
+    for (int i = 0; i < g.count; ++i)
+    {
+        v[size_t(i)] = s.empty() ? 0.0 : s(g.wavelength(i));
+    }
+    return v;
+}
+
+/// XYZ_EE of (light × remittance), light scaled to its largest band = 1.
+Vec3 ProductXyz(const SceneSpectrum& light, double scale, const Spectrum& remittance, const Grid& g,
+                const Cmf& cmf)
+{
+    Vec3 xyz = Vec3::Zero();
+    if (!light.continuous.empty())
+    {
+        for (int i = 0; i < g.count; ++i)
+        {
+            const double l = g.wavelength(i);
+            xyz += light.continuous(l) * remittance(l) * cmf.weight[size_t(i)];
+        }
+    }
+    const MatchingFunctions& f = GetMatchingFunctions(Observer::CIE1931_2DEG);
+    for (const SpectralLine& line : light.lines.lines())
+    {
+        const double l = line.wavelengthNm;
+        xyz += line.power * remittance(l) * Vec3(f.x(l), f.y(l), f.z(l)) / cmf.norm.y();
+    }
+    return xyz * scale;
+}
+
+/// diag(N) / N_y · B: band values → XYZ on the scene's scale.
+Eigen::MatrixXd BandToXyz(const BandSet& bands)
+{
+    const Vec3 n = CmfNorm(bands);
+    return (n / n.y()).asDiagonal() *
+           MatchingBandMatrix(bands, MatchingSet::XYZ, Observer::CIE1931_2DEG);
+}
+
+std::vector<double> ToChannels(const Output& out, const Vec3& xyz)
+{
+    const Vec3 rgb = out.xyzToRgb * xyz;
+    return {rgb.x(), rgb.y(), rgb.z()};
+}
+
+/// One unit of `light` on `remittance`, in the output's channels.
+std::vector<double> ProductColour(const Scene& s, const Output& out, const SceneSpectrum& light,
+                                  const Spectrum& remittance, const Grid& grid, const Cmf& cmf)
+{
+    const BandSet& bands = s.settings.bands;
+    const double scale = LightScale(light, bands);
+    if (s.settings.mode == RenderSettings::Mode::SPECTRAL)
+    {
+        return ToChannels(out, ProductXyz(light, scale, remittance, grid, cmf));
+    }
+    const std::vector<double> i = Means(light, bands);
+    const std::vector<double> r = BandMeans(remittance, bands);
+    Eigen::VectorXd product(Eigen::Index(bands.size()));
+    for (size_t b = 0; b < bands.size(); ++b)
+    {
+        product(Eigen::Index(b)) = i[b] * scale * r[b];
+    }
+    if (out.bands)
+    {
+        return std::vector<double>(product.data(), product.data() + product.size());
+    }
+    return ToChannels(out, BandToXyz(bands) * product);
+}
+
+/// The coarsest of 20, 10, 5, 2, 1 nm that reproduces every product of the
+/// scene (1 nm as the truth) to 1e-4 of the light's white.
+double ChooseStep(const Scene& s, std::string& why)
+{
+    const BandSet& bands = s.settings.bands;
+    const Grid fine = MakeGrid(1.0);
+    const Cmf fineCmf = MakeCmf(fine, bands);
+    for (double step : {20.0, 10.0, 5.0, 2.0})
+    {
+        const Grid g = MakeGrid(step);
+        const Cmf c = MakeCmf(g, bands);
+        double worst = 0.0;
+        for (const SceneLight& l : s.lights)
+        {
+            const double scale = LightScale(l.spectrum, bands);
+            for (const SceneMaterial& m : s.materials)
+            {
+                for (const SceneSpectrum* r : {&m.ambient, &m.diffuse, &m.specular})
+                {
+                    if (r->continuous.empty())
+                    {
+                        continue;
+                    }
+                    const Vec3 a = ProductXyz(l.spectrum, scale, r->continuous, g, c);
+                    const Vec3 b = ProductXyz(l.spectrum, scale, r->continuous, fine, fineCmf);
+                    worst = std::max(worst, (a - b).cwiseAbs().maxCoeff());
+                }
+            }
+        }
+        if (worst <= 1e-4)
+        {
+            std::ostringstream o;
+            o << step << " nm reproduces every light x remittance product to " << worst
+              << " (1 nm as truth, tolerance 1e-4 of white)";
+            why = o.str();
+            return step;
+        }
+    }
+    why = "the spectra have detail finer than 2 nm: 1 nm";
+    return 1.0;
+}
+
+void CheckScene(const Scene& s)
+{
+    const int n = int(s.materials.size());
+    for (const Sphere& sp : s.spheres)
+    {
+        if (sp.material < 0 || sp.material >= n)
+        {
+            throw Exception("a sphere uses material " + std::to_string(sp.material) + " of " +
+                            std::to_string(n));
+        }
+    }
+    for (const Plane& p : s.planes)
+    {
+        if (p.material < 0 || p.material >= n)
+        {
+            throw Exception("a plane uses material " + std::to_string(p.material) + " of " +
+                            std::to_string(n));
+        }
+    }
+    if (s.camera.width <= 0 || s.camera.height <= 0)
+    {
+        throw Exception("the image size must be positive");
+    }
+}
+
+}  // namespace bandlight::detail
