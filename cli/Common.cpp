@@ -35,12 +35,11 @@ NamedSpectrum ResolveIlluminant(const std::string& nameOrFile)
     {
         return {CanonicalIlluminantName(nameOrFile), BuiltinIlluminant(nameOrFile)};
     }
-    if (FileExists(nameOrFile))
+    if (!FileExists(nameOrFile))
     {
-        return ReadSpectraFile(nameOrFile).front();
+        return {nameOrFile, BuiltinIlluminant(nameOrFile)};  // throws, listing the choices
     }
-    BuiltinIlluminant(nameOrFile);  // throws the message listing the choices
-    return {};
+    return ReadSpectraFile(nameOrFile).front();
 }
 
 std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)

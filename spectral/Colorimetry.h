@@ -60,7 +60,7 @@ private:
 Vec3 XyzToxyY(const Vec3& xyz) noexcept;
 Vec3 xyYToXyz(const Vec3& xyY) noexcept;
 
-/// CIE 1960 UCS (u, v) and CIE 1976 (u', v') chromaticities.
+/// CIE 1960 UCS (u, v) chromaticity (CIE 15:2004 §8.1; v' = 1.5 v).
 Eigen::Vector2d XyzToUv1960(const Vec3& xyz) noexcept;
 
 /// CIELAB (CIE 15:2004 §8.2.1) relative to the white `whiteXyz` (same scale as xyz).
