@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 
-#include <OpenImageIO/imageio.h>
 #include <Eigen/LU>
 
 #include "cli/Commands.h"
@@ -119,11 +118,11 @@ void RunPackage(const std::string& dir)
     for (const Output& o : outputs)
     {
         WriteImage(dir + "/" + o.name + ".exr", o.pixels.data(), w, h, 4, {"R", "G", "B", "A"},
-                   workingName, OIIO::TypeDesc::HALF);
+                   workingName, PixelType::HALF);
         std::vector<float> preview = o.pixels;
         ApplyToBuffer(toSrgb, preview.data(), w, h, 4, rgb, 0);
         WriteImage(dir + "/" + o.name + ".png", preview.data(), w, h, 4, {"R", "G", "B", "A"},
-                   "sRGB", OIIO::TypeDesc::UINT8);
+                   "sRGB", PixelType::UINT8);
         std::cout << "Wrote " << dir << "/" << o.name << ".exr (" << workingName
                   << ") and .png (sRGB preview)\n";
     }

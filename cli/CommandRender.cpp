@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 
-#include <OpenImageIO/typedesc.h>
 #include <Eigen/LU>
 
 #include "cli/Commands.h"
@@ -79,7 +78,7 @@ std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working
 void Write(const RenderedImage& img, const std::string& out, const std::string& space)
 {
     WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, space,
-               OIIO::TypeDesc::FLOAT);
+               PixelType::FLOAT);
     std::cout << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
               << " channels, " << space << ")\n";
     if (space != "bands")
@@ -87,7 +86,7 @@ void Write(const RenderedImage& img, const std::string& out, const std::string& 
         const std::string png = Stem(out) + ".png";
         const std::vector<float> preview = SrgbPreview(img, FindRgbSpace(space));
         WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, "sRGB",
-                   OIIO::TypeDesc::UINT8);
+                   PixelType::UINT8);
         std::cout << "Wrote " << png << " (sRGB preview)\n";
     }
 }
@@ -172,7 +171,7 @@ void RunRender(const RenderOptions& o)
     }
     const std::string heatPath = Stem(out) + "_dE00.exr";
     WriteImage(heatPath, heat.pixels.data(), heat.width, heat.height, 1, heat.channelNames, "data",
-               OIIO::TypeDesc::FLOAT);
+               PixelType::FLOAT);
     // A viewable heat map: 0 → black, 10 ΔE00 or more → white.
     std::vector<float> grey(heat.pixels.size());
     for (size_t i = 0; i < grey.size(); ++i)
@@ -180,7 +179,7 @@ void RunRender(const RenderOptions& o)
         grey[i] = std::min(1.0f, heat.pixels[i] / 10.0f);
     }
     WriteImage(Stem(out) + "_dE00.png", grey.data(), heat.width, heat.height, 1, {"Y"}, "data",
-               OIIO::TypeDesc::UINT8);
+               PixelType::UINT8);
     double sum = 0.0;
     for (double e : de)
     {

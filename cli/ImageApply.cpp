@@ -1,42 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/ImageApply.h"
 
+#include <dlfcn.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <regex>
 #include <thread>
 
-#include <OpenImageIO/imageio.h>
-
-#include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::cli
 {
-
-namespace
-{
-
-/// Channel indices of R, G, B by name ("R", "G", "B", or a layer's "*.R"),
-/// falling back to the first three channels.
-void FindRgb(const OIIO::ImageSpec& spec, int rgb[3])
-{
-    const char* names[3] = {"R", "G", "B"};
-    for (int c = 0; c < 3; ++c)
-    {
-        rgb[c] = c;
-        for (int i = 0; i < spec.nchannels; ++i)
-        {
-            if (spec.channel_name(i) == names[c])
-            {
-                rgb[c] = i;
-                break;
-            }
-        }
-    }
-}
-
-}  // namespace
 
 void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long width, long height,
                    int channels, const int rgb[3], int threads)
@@ -93,84 +70,68 @@ void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long 
 void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
                   const std::string& out, int threads, const std::string& note)
 {
-    auto input = OIIO::ImageInput::open(in);
-    if (!input)
+    const std::string error = ImageFiles().transform(
+        in, out,
+        [&](float* pixels, long width, long height, int channels, const int* rgb)
+        { ApplyToBuffer(cpu, pixels, width, height, channels, rgb, threads); },
+        note);
+    if (!error.empty())
     {
-        throw Exception(in + ": cannot read image: " + OIIO::geterror());
+        throw Exception(error);
     }
-    const OIIO::ImageSpec spec = input->spec();
-    if (spec.nchannels < 3)
-    {
-        throw Exception(in + ": has " + std::to_string(spec.nchannels) +
-                        " channels; a colour transform needs R, G and B");
-    }
-    std::vector<float> pixels(spec.image_pixels() * size_t(spec.nchannels));
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    {
-        throw Exception(in + ": cannot read pixels: " + input->geterror());
-    }
-    input->close();
-
-    int rgb[3];
-    FindRgb(spec, rgb);
-    ApplyToBuffer(cpu, pixels.data(), spec.width, spec.height * std::max(1, spec.depth),
-                  spec.nchannels, rgb, threads);
-
-    OIIO::ImageSpec outSpec = spec;  // pixel type, channel names, metadata
-    if (!note.empty())
-    {
-        outSpec.attribute("bandlight:transform", note);
-    }
-    AtomicFile file(out);
-    file.stream().close();  // OIIO writes by name
-    auto output = OIIO::ImageOutput::create(out);
-    if (!output)
-    {
-        throw Exception(out + ": no image writer for this file type: " + OIIO::geterror());
-    }
-    if (!output->open(file.tempPath(), outSpec))
-    {
-        throw Exception(out + ": cannot write image: " + output->geterror());
-    }
-    if (!output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !output->close())
-    {
-        throw Exception(out + ": cannot write image: " + output->geterror());
-    }
-    file.commit();
 }
 
 void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
                 const std::vector<std::string>& channelNames, const std::string& colorSpace,
-                OIIO::TypeDesc type)
+                PixelType type)
 {
-    OIIO::ImageSpec spec(width, height, channels, type);
-    if (int(channelNames.size()) == channels)
+    const std::string error =
+        ImageFiles().write(path, pixels, width, height, channels, channelNames, colorSpace, type);
+    if (!error.empty())
     {
-        spec.channelnames = channelNames;
+        throw Exception(error);
     }
-    spec.alpha_channel = -1;
-    for (int c = 0; c < channels; ++c)
+}
+
+const ImageFilesApi& ImageFiles()
+{
+    static const ImageFilesApi* api = []
     {
-        if (spec.channelnames[size_t(c)] == "A")
+        // The module sits beside the executable in a build tree, in
+        // ../lib/bandlight when installed, or where the environment says.
+        std::vector<std::string> places;
+        if (const char* env = std::getenv("BANDLIGHT_IMAGE_MODULE"))
         {
-            spec.alpha_channel = c;
+            places.push_back(env);
         }
-    }
-    spec.attribute("oiio:ColorSpace", colorSpace);
-    spec.attribute("Software", "bandlight");
-    AtomicFile file(path);
-    file.stream().close();  // OIIO writes by name
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out)
-    {
-        throw Exception(path + ": no image writer for this file type: " + OIIO::geterror());
-    }
-    if (!out->open(file.tempPath(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
-        !out->close())
-    {
-        throw Exception(path + ": cannot write image: " + out->geterror());
-    }
-    file.commit();
+        char exe[4096];
+        const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+        if (n > 0)
+        {
+            exe[n] = '\0';
+            std::string dir(exe);
+            dir = dir.substr(0, dir.find_last_of('/'));
+            places.push_back(dir + "/libbandlight_images.so");
+            places.push_back(dir + "/../lib/bandlight/libbandlight_images.so");
+        }
+        std::string tried;
+        for (const std::string& p : places)
+        {
+            if (void* h = ::dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL))
+            {
+                using Entry = const ImageFilesApi* (*)();
+                auto entry = reinterpret_cast<Entry>(::dlsym(h, "bandlight_image_files_api"));
+                if (entry && entry()->version == kImageFilesApiVersion)
+                {
+                    return entry();
+                }
+            }
+            const char* err = ::dlerror();
+            tried += (tried.empty() ? "" : "; ") + std::string(err ? err : p.c_str());
+        }
+        throw Exception("cannot load the image module libbandlight_images.so (" + tried + ")");
+    }();
+    return *api;
 }
 
 bool HasFramePattern(const std::string& pattern)

@@ -5,7 +5,8 @@
 #include <vector>
 
 #include <OpenColorIO/OpenColorIO.h>
-#include <OpenImageIO/typedesc.h>
+
+#include "cli/ImageFiles.h"
 
 namespace bandlight::cli
 {
@@ -27,12 +28,12 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
 void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long width, long height,
                    int channels, const int rgb[3], int threads);
 
-/// Writes interleaved float pixels through OIIO, atomically, as `type`
-/// (FLOAT, HALF, UINT8, ...), with channel names and an oiio:ColorSpace
-/// attribute. Throws Exception naming the file on failure.
+/// Writes interleaved float pixels through OIIO, atomically, stored as
+/// `type`, with channel names and an oiio:ColorSpace attribute. Throws
+/// Exception naming the file on failure.
 void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
                 const std::vector<std::string>& channelNames, const std::string& colorSpace,
-                OIIO_NAMESPACE::TypeDesc type);
+                PixelType type);
 
 /// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
 /// gives "plate.1001.exr"; a name without a pattern is returned unchanged.

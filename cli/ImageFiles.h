@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// The image-file half of bandlight, built as a module that the command loads
+// only when it reads or writes an image: OpenImageIO's shared library and its
+// dependencies cost about 0.4 s to start, which the spectral and OCIO
+// commands should not pay.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace bandlight::cli
+{
+
+enum class PixelType
+{
+    FLOAT,
+    HALF,
+    UINT8,
+};
+
+/// Processes interleaved float pixels in place: (pixels, width, height,
+/// channels, indices of R, G, B).
+using PixelProcess = std::function<void(float*, long, long, int, const int*)>;
+
+/// The module's entry points. Each returns "" on success or the error
+/// message (which names the file).
+struct ImageFilesApi
+{
+    int version;
+    std::string (*transform)(const std::string& in, const std::string& out,
+                             const PixelProcess& process, const std::string& note);
+    std::string (*write)(const std::string& path, const float* pixels, int width, int height,
+                         int channels, const std::vector<std::string>& channelNames,
+                         const std::string& colorSpace, PixelType type);
+};
+
+constexpr int kImageFilesApiVersion = 1;
+
+/// The loaded module's API; throws Exception when it cannot be found, naming
+/// the places looked in (beside the executable, ../lib/bandlight, or
+/// $BANDLIGHT_IMAGE_MODULE).
+const ImageFilesApi& ImageFiles();
+
+}  // namespace bandlight::cli
+
+extern "C" const bandlight::cli::ImageFilesApi* bandlight_image_files_api();
