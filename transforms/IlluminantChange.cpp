@@ -108,6 +108,24 @@ MethodSpec ParseMethod(const std::string& name)
     {
         m.method = ChangeMethod::SPECTRAL;
     }
+    else if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
+    {
+        // Any band set, written into the name so it can name looks:
+        // "bands380-480-560-780" (edges in nm), "-wp" for the white-preserving form.
+        std::string edges = n.substr(5);
+        m.method = ChangeMethod::BAND;
+        if (edges.size() > 3 && edges.compare(edges.size() - 3, 3, "-wp") == 0)
+        {
+            m.method = ChangeMethod::BAND_WP;
+            edges = edges.substr(0, edges.size() - 3);
+        }
+        std::replace(edges.begin(), edges.end(), '-', ',');
+        m.bands = BandSet::Parse(edges);
+        if (m.bands.size() < 3)
+        {
+            throw Exception("method '" + name + "': a band set needs at least three bands");
+        }
+    }
     else if (n.rfind("band", 0) == 0)
     {
         std::string rest = n.substr(4);
@@ -132,7 +150,7 @@ MethodSpec ParseMethod(const std::string& name)
     {
         throw Exception("unknown method '" + name +
                         "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
-                        "fit3x3, prefilter, metamer, upsample, spectral)");
+                        "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, spectral)");
     }
     return m;
 }

@@ -33,7 +33,9 @@ enum class ChangeMethod
 
 /// A method with its parameters, parsed from its name: "none", "vonkries",
 /// "bradford", "cat02", "band3" (the lecture's VB/VG/VR), "band3-wp",
-/// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), "fit3x3",
+/// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), any band set as
+/// "bands380-480-560-780" (edges in nm, "-wp" appended for the
+/// white-preserving form: no ':' or '=' so it can name looks), "fit3x3",
 /// "prefilter", "metamer", "upsample", "spectral".
 struct MethodSpec
 {

@@ -85,6 +85,22 @@ TEST_CASE("Method names", "[transforms]")
     CHECK(ParseMethod("band6").bands.size() == 6);
     CHECK(ParseMethod("BAND3-WP").name == "band3-wp");
     CHECK_THROWS_WITH(ParseMethod("band2"), Contains("3 <= N <= 300"));
+    // Any band set, named by its edges.
+    const MethodSpec custom = ParseMethod("bands380-480-560-780-wp");
+    CHECK(custom.method == ChangeMethod::BAND_WP);
+    CHECK(custom.bands.describe() == "380,480,560,780");
+    CHECK(ParseMethod("bands400-500-600-700").bands.describe() == "400,500,600,700");
+    CHECK_THROWS_WITH(ParseMethod("bands400-500-450-700"), Contains("not increasing"));
+    CHECK_THROWS_WITH(ParseMethod("bands400-500-600"), Contains("at least three bands"));
+    // The same edges as band3 give band3's matrix; other edges another one.
+    const Light a{"A", BuiltinIlluminant("A")}, d{"D65", BuiltinIlluminant("D65")};
+    const RgbSpace& ws = FindRgbSpace("acescg");
+    CHECK((IlluminantChangeMatrix(a, d, ParseMethod("bands400-500-600-700"), ws) -
+           IlluminantChangeMatrix(a, d, ParseMethod("band3"), ws))
+              .norm() < 1e-12);
+    CHECK((IlluminantChangeMatrix(a, d, ParseMethod("bands380-480-560-780"), ws) -
+           IlluminantChangeMatrix(a, d, ParseMethod("band3"), ws))
+              .norm() > 1e-3);
     CHECK_THROWS_WITH(ParseMethod("bandx"), Contains("unknown method 'bandx'"));
     CHECK_THROWS_WITH(ParseMethod("magic"), Contains("unknown method 'magic'"));
     CHECK(LinearMethodNames().size() == 6);
