@@ -188,6 +188,32 @@ TEST_CASE("apply without a config is the same as the config's look", "[cli][oiio
     CHECK(WorstRelative(Read(a), Read(b), 0, 3) <= 1e-6);
 }
 
+TEST_CASE("apply reads and writes any format OIIO does, keeping the pixel type", "[cli][oiio]")
+{
+    const std::string exr = Temp("typed.exr");
+    WriteTestImage(exr, 16, 8, 9);
+    for (const char* ext : {"tif", "png"})
+    {
+        const std::string in = Temp(std::string("typed_in.") + ext);
+        const std::string out = Temp(std::string("typed_out.") + ext);
+        REQUIRE(
+            Sh("oiiotool '" + exr + "' --ch R,G,B,A --clamp:min=0:max=1 -d uint16 -o '" + in + "'")
+                .code == 0);
+        const Result r =
+            Bandlight("apply '" + in + "' '" + out + "' --from A --to D65 --method none");
+        INFO(ext << ": " << r.err);
+        REQUIRE(r.code == 0);
+        const OIIO::ImageBuf a = Read(in), b = Read(out);
+        auto fin = OIIO::ImageInput::open(in);
+        auto fout = OIIO::ImageInput::open(out);
+        REQUIRE(fin);
+        REQUIRE(fout);
+        CHECK(fout->spec().format == fin->spec().format);
+        CHECK(b.spec().nchannels == 4);
+        CHECK(WorstRelative(a, b, 0, 4) <= 1.01 / 65535.0);  // identity: at most one code value
+    }
+}
+
 TEST_CASE("apply runs over a frame range for farm splits", "[cli][oiio]")
 {
     for (int f : {1001, 1002, 1003})
