@@ -208,21 +208,22 @@ void Add(RenderCounters& into, const RenderCounters& c)
     into.spectralSamples += c.spectralSamples;
 }
 
-}  // namespace
-
-RenderedImage RenderScene(const Scene& s, const ScenePlan& p, int threads, RenderCounters* counters)
+/// Casts one primary ray per pixel, rows on `threads` threads, and lets
+/// `shade(hit, direction, scratch, counters, pixel)` write each hit pixel;
+/// `scratch` is a per-row buffer of `scratchSize` doubles. Background stays 0.
+template <typename Shade>
+RenderedImage CastRays(const Scene& s, const Output& out, int threads, RenderCounters* counters,
+                       size_t scratchSize, Shade&& shade)
 {
-    const Output out = MakeOutput(s);
     const CameraRays cam(s.camera);
     RenderedImage img = BlankImage(s, out);
     RenderCounters total;
     std::mutex mu;
-    const size_t ch = size_t(out.channels);
     ForEachRow(img.height, threads,
                [&](int y)
                {
                    RenderCounters c;
-                   std::vector<double> acc(ch);
+                   std::vector<double> scratch(scratchSize);
                    for (int x = 0; x < img.width; ++x)
                    {
                        ++c.pixels;
@@ -233,33 +234,9 @@ RenderedImage RenderScene(const Scene& s, const ScenePlan& p, int threads, Rende
                            continue;
                        }
                        ++c.hits;
-                       const size_t m = size_t(hit.material);
-                       acc = p.ambientColour[m];
-                       for (size_t g = 0; g < p.groups.size(); ++g)
-                       {
-                           Factors sum;
-                           for (int li : p.groups[g])
-                           {
-                               const Factors f = LightFactors(s.lights[size_t(li)], hit, -d,
-                                                              s.materials[m].exponent, p.specular,
-                                                              p.attenuation, c);
-                               sum.diffuse += f.diffuse;
-                               sum.specular += f.specular;
-                           }
-                           for (size_t k = 0; k < ch; ++k)
-                           {
-                               acc[k] += sum.diffuse * p.diffuseColour[g][m][k];
-                               if (p.specular)
-                               {
-                                   acc[k] += sum.specular * p.specularColour[g][m][k];
-                               }
-                           }
-                       }
-                       float* px = &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * ch];
-                       for (size_t k = 0; k < ch; ++k)
-                       {
-                           px[k] = float(acc[k]);
-                       }
+                       shade(hit, d, scratch, c,
+                             &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) *
+                                         size_t(img.channels)]);
                    }
                    std::lock_guard<std::mutex> lock(mu);
                    Add(total, c);
@@ -269,6 +246,45 @@ RenderedImage RenderScene(const Scene& s, const ScenePlan& p, int threads, Rende
         *counters = total;
     }
     return img;
+}
+
+}  // namespace
+
+RenderedImage RenderScene(const Scene& s, const ScenePlan& p, int threads, RenderCounters* counters)
+{
+    const Output out = MakeOutput(s);
+    const size_t ch = size_t(out.channels);
+    return CastRays(
+        s, out, threads, counters, ch,
+        [&](const Hit& hit, const Vec3& d, std::vector<double>& acc, RenderCounters& c, float* px)
+        {
+            const size_t m = size_t(hit.material);
+            acc = p.ambientColour[m];
+            for (size_t g = 0; g < p.groups.size(); ++g)
+            {
+                Factors sum;
+                for (int li : p.groups[g])
+                {
+                    const Factors f =
+                        LightFactors(s.lights[size_t(li)], hit, -d, s.materials[m].exponent,
+                                     p.specular, p.attenuation, c);
+                    sum.diffuse += f.diffuse;
+                    sum.specular += f.specular;
+                }
+                for (size_t k = 0; k < ch; ++k)
+                {
+                    acc[k] += sum.diffuse * p.diffuseColour[g][m][k];
+                    if (p.specular)
+                    {
+                        acc[k] += sum.specular * p.specularColour[g][m][k];
+                    }
+                }
+            }
+            for (size_t k = 0; k < ch; ++k)
+            {
+                px[k] = float(acc[k]);
+            }
+        });
 }
 
 RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* counters)
@@ -322,104 +338,78 @@ RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* 
     const Eigen::MatrixXd bm = BandToXyz(bands);
     const MatchingFunctions& f = GetMatchingFunctions(Observer::CIE1931_2DEG);
 
-    const CameraRays cam(s.camera);
-    RenderedImage img = BlankImage(s, out);
-    RenderCounters total;
-    std::mutex mu;
-    ForEachRow(
-        img.height, threads,
-        [&](int y)
+    return CastRays(
+        s, out, threads, counters, size_t(n),
+        [&](const Hit& hit, const Vec3& d, std::vector<double>& acc, RenderCounters& c, float* px)
         {
-            RenderCounters c;
-            std::vector<double> acc(static_cast<size_t>(n));
-            for (int x = 0; x < img.width; ++x)
+            const size_t m = size_t(hit.material);
+            std::fill(acc.begin(), acc.end(), 0.0);
+            Vec3 lineXyz = Vec3::Zero();
+            for (size_t li = 0; li < s.lights.size(); ++li)
             {
-                ++c.pixels;
-                const Vec3 d = cam.direction(x, y);
-                Hit hit;
-                if (!Intersect(s, cam.origin, d, hit))
+                const SceneLight& l = s.lights[li];
+                double kd = 0.0, ks = 0.0, ka = 0.0, kstar = 0.0;
+                if (l.kind == SceneLight::Kind::AMBIENT)
                 {
-                    continue;
-                }
-                ++c.hits;
-                const size_t m = size_t(hit.material);
-                std::fill(acc.begin(), acc.end(), 0.0);
-                Vec3 lineXyz = Vec3::Zero();
-                for (size_t li = 0; li < s.lights.size(); ++li)
-                {
-                    const SceneLight& l = s.lights[li];
-                    double kd = 0.0, ks = 0.0, ka = 0.0, kstar = 0.0;
-                    if (l.kind == SceneLight::Kind::AMBIENT)
-                    {
-                        ka = l.intensity;
-                    }
-                    else
-                    {
-                        kstar = l.intensity;  // R_amb*: only with one direct light (checked by the
-                                              // plan)
-                        const Factors fa =
-                            LightFactors(l, hit, -d, s.materials[m].exponent, true, true, c);
-                        kd = fa.diffuse;
-                        ks = fa.specular;
-                    }
-                    for (int i = 0; i < n; ++i)
-                    {
-                        acc[size_t(i)] +=
-                            light[li][size_t(i)] *
-                            (ka * rem[m].amb[size_t(i)] + kd * rem[m].diff[size_t(i)] +
-                             ks * rem[m].spec[size_t(i)] + kstar * rem[m].star[size_t(i)]);
-                    }
-                    c.spectralSamples += uint64_t(n);
-                    if (spectral)
-                    {
-                        const SceneMaterial& mat = s.materials[m];
-                        for (const SpectralLine& line : l.spectrum.lines.lines())
-                        {
-                            const double w = line.wavelengthNm;
-                            const double r = ka * mat.ambient.continuous(w) +
-                                             kd * mat.diffuse.continuous(w) +
-                                             ks * mat.specular.continuous(w) +
-                                             (mat.ambientStar.continuous.empty()
-                                                  ? 0.0
-                                                  : kstar * mat.ambientStar.continuous(w));
-                            lineXyz += lightScale[li] * line.power * r *
-                                       Vec3(f.x(w), f.y(w), f.z(w)) / cmf.norm.y();
-                        }
-                    }
-                }
-                std::vector<double> colour;
-                if (spectral)
-                {
-                    Vec3 xyz = lineXyz;
-                    for (int i = 0; i < n; ++i)
-                    {
-                        xyz += acc[size_t(i)] * cmf.weight[size_t(i)];
-                    }
-                    colour = ToChannels(out, xyz);
-                }
-                else if (out.bands)
-                {
-                    colour = acc;
+                    ka = l.intensity;
                 }
                 else
                 {
-                    colour = ToChannels(out, bm * Eigen::Map<const Eigen::VectorXd>(acc.data(), n));
+                    kstar = l.intensity;  // R_amb*: only with one direct light (checked by the
+                                          // plan)
+                    const Factors fa =
+                        LightFactors(l, hit, -d, s.materials[m].exponent, true, true, c);
+                    kd = fa.diffuse;
+                    ks = fa.specular;
                 }
-                float* px =
-                    &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * size_t(img.channels)];
-                for (size_t k = 0; k < colour.size(); ++k)
+                for (int i = 0; i < n; ++i)
                 {
-                    px[k] = float(colour[k]);
+                    acc[size_t(i)] +=
+                        light[li][size_t(i)] *
+                        (ka * rem[m].amb[size_t(i)] + kd * rem[m].diff[size_t(i)] +
+                         ks * rem[m].spec[size_t(i)] + kstar * rem[m].star[size_t(i)]);
+                }
+                c.spectralSamples += uint64_t(n);
+                if (spectral)
+                {
+                    const SceneMaterial& mat = s.materials[m];
+                    for (const SpectralLine& line : l.spectrum.lines.lines())
+                    {
+                        const double w = line.wavelengthNm;
+                        const double r = ka * mat.ambient.continuous(w) +
+                                         kd * mat.diffuse.continuous(w) +
+                                         ks * mat.specular.continuous(w) +
+                                         (mat.ambientStar.continuous.empty()
+                                              ? 0.0
+                                              : kstar * mat.ambientStar.continuous(w));
+                        lineXyz += lightScale[li] * line.power * r * Vec3(f.x(w), f.y(w), f.z(w)) /
+                                   cmf.norm.y();
+                    }
                 }
             }
-            std::lock_guard<std::mutex> lock(mu);
-            Add(total, c);
+            std::vector<double> colour;
+            if (spectral)
+            {
+                Vec3 xyz = lineXyz;
+                for (int i = 0; i < n; ++i)
+                {
+                    xyz += acc[size_t(i)] * cmf.weight[size_t(i)];
+                }
+                colour = ToChannels(out, xyz);
+            }
+            else if (out.bands)
+            {
+                colour = acc;
+            }
+            else
+            {
+                colour = ToChannels(out, bm * Eigen::Map<const Eigen::VectorXd>(acc.data(), n));
+            }
+            for (size_t k = 0; k < colour.size(); ++k)
+            {
+                px[k] = float(colour[k]);
+            }
         });
-    if (counters)
-    {
-        *counters = total;
-    }
-    return img;
 }
 
 }  // namespace bandlight
