@@ -13,6 +13,7 @@
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
 #include "transforms/IlluminantChange.h"
 
 namespace bandlight::cli
@@ -353,21 +354,11 @@ SceneMaterial Material(const Reader& r, const std::string& name, const YAML::Nod
 
 }  // namespace
 
-Scene ReadSceneFile(const std::string& path)
+namespace
 {
-    YAML::Node root;
-    try
-    {
-        root = YAML::LoadFile(path);
-    }
-    catch (const YAML::BadFile&)
-    {
-        throw Exception(path + ": cannot open scene file");
-    }
-    catch (const YAML::ParserException& e)
-    {
-        throw Exception(SourcePosition(path, size_t(e.mark.line) + 1) + ": " + e.msg);
-    }
+
+Scene ParseScene(const YAML::Node& root, const std::string& path)
+{
     const size_t slash = path.find_last_of('/');
     const Reader r{path, slash == std::string::npos ? "" : path.substr(0, slash + 1)};
     if (!root.IsMap())
@@ -611,6 +602,30 @@ Scene ReadSceneFile(const std::string& path)
         throw Exception(path + ": the scene has no lights");
     }
     return s;
+}
+
+}  // namespace
+
+Scene ReadSceneText(const std::string& text, const std::string& path)
+{
+    try
+    {
+        std::string checked = text;
+        CheckUtf8Text(checked, path);
+        return ParseScene(YAML::Load(checked), path);
+    }
+    catch (const YAML::Exception& e)
+    {
+        // Syntax errors, and a value of the wrong kind where the reader asks
+        // yaml-cpp for a string (a list where a name belongs).
+        const size_t line = e.mark.is_null() ? 0 : size_t(e.mark.line) + 1;
+        throw Exception(SourcePosition(path, line) + ": " + e.msg);
+    }
+}
+
+Scene ReadSceneFile(const std::string& path)
+{
+    return ReadSceneText(ReadTextFile(path, "scene file"), path);
 }
 
 }  // namespace bandlight::cli

@@ -14,4 +14,8 @@ namespace bandlight::cli
 /// paths are relative to the scene file.
 Scene ReadSceneFile(const std::string& path);
 
+/// The same for scene text already in memory; `path` names it in messages
+/// and anchors its relative file names.
+Scene ReadSceneText(const std::string& text, const std::string& path);
+
 }  // namespace bandlight::cli

@@ -59,7 +59,8 @@ std::string ShaperSpec::describe() const
     }
     std::ostringstream o;
     o << "log2: linear " << minLinear << " to " << maxLinear << " mapped to 0 to 1, linear below "
-      << breakLinear << ", log2 above";
+      << breakLinear << ", log2 above; input outside " << minLinear << " to " << maxLinear
+      << " is clamped to it, NaN to " << minLinear;
     return o.str();
 }
 

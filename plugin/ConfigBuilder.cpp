@@ -103,7 +103,7 @@ void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observ
         "scene-linear");
     const Mat3 bandToWorking = BandToWorkingMatrix(bands, working, observer);
     OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
-    g->appendTransform(MakeMatrixTransform(bandToWorking));
+    g->appendTransform(GuardedMatrixTransform(bandToWorking));
     if (workingToReference)
     {
         g->appendTransform(workingToReference);
@@ -157,7 +157,7 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                 OCIO::TransformRcPtr transform;
                 if (method.isLinear())
                 {
-                    transform = MakeMatrixTransform(
+                    transform = GuardedMatrixTransform(
                         IlluminantChangeMatrix(from, to, method, working, o.observer));
                 }
                 else
@@ -279,7 +279,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
         }
         OCIO::ColorSpaceRcPtr cs =
             SceneSpace(ColorSpaceName(s), "Scene-linear", s.description, "scene-linear");
-        cs->setTransform(MakeMatrixTransform(SpaceToSpace(s, working)),
+        cs->setTransform(GuardedMatrixTransform(SpaceToSpace(s, working)),
                          OCIO::COLORSPACE_DIR_TO_REFERENCE);
         config->addColorSpace(cs);
     }
@@ -287,7 +287,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
     OCIO::ColorSpaceRcPtr xyz =
         SceneSpace("CIE-XYZ-D65", "Scene-linear", "CIE 1931 XYZ with a D65 white (Y = 1 for white)",
                    "scene-linear");
-    xyz->setTransform(MakeMatrixTransform(SpaceToXyzD65(working).inverse()),
+    xyz->setTransform(GuardedMatrixTransform(SpaceToXyzD65(working).inverse()),
                       OCIO::COLORSPACE_DIR_TO_REFERENCE);
     config->addColorSpace(xyz);
 
@@ -295,7 +295,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
         "sRGB", "Display", "sRGB (IEC 61966-2-1) encoded Rec.709, for 8-bit images", "sdr-video");
     OCIO::GroupTransformRcPtr srgbToRef = OCIO::GroupTransform::Create();
     srgbToRef->appendTransform(SrgbDecode());
-    srgbToRef->appendTransform(MakeMatrixTransform(SpaceToSpace(rec709, working)));
+    srgbToRef->appendTransform(GuardedMatrixTransform(SpaceToSpace(rec709, working)));
     srgb->setTransform(srgbToRef, OCIO::COLORSPACE_DIR_TO_REFERENCE);
     config->addColorSpace(srgb);
 
@@ -453,9 +453,10 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir)
     }
     // The LUTs first: a config is never left pointing at files not yet there.
     OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
-    for (const auto& [path, transform] : package.lutFiles)
+    for (const auto& lut : package.lutFiles)
     {
-        WriteFileAtomically(dir + "/" + path, [&](std::ostream& os)
+        const auto& transform = lut.second;
+        WriteFileAtomically(dir + "/" + lut.first, [&](std::ostream& os)
                             { transform->write(raw, "Academy/ASC Common LUT Format", os); });
     }
     WriteFileAtomically(dir + "/config.ocio",

@@ -22,6 +22,26 @@ OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m)
     return t;
 }
 
+OCIO::RangeTransformRcPtr InfinityGuard()
+{
+    OCIO::RangeTransformRcPtr r = OCIO::RangeTransform::Create();
+    r->setStyle(OCIO::RANGE_CLAMP);
+    r->setMinInValue(-INFINITY_GUARD);
+    r->setMinOutValue(-INFINITY_GUARD);
+    r->setMaxInValue(INFINITY_GUARD);
+    r->setMaxOutValue(INFINITY_GUARD);
+    return r;
+}
+
+OCIO::GroupTransformRcPtr GuardedMatrixTransform(const Mat3& m)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    g->appendTransform(InfinityGuard());
+    g->appendTransform(MakeMatrixTransform(m));
+    g->appendTransform(InfinityGuard());
+    return g;
+}
+
 namespace
 {
 OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name,
@@ -32,7 +52,9 @@ OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name,
     md.setName(name.c_str());
     md.setID(name.c_str());
     md.addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
+    g->appendTransform(InfinityGuard());
     g->appendTransform(MakeMatrixTransform(m));
+    g->appendTransform(InfinityGuard());
     return g;
 }
 }  // namespace

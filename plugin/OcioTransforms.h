@@ -13,6 +13,23 @@ namespace bandlight
 {
 namespace OCIO = OCIO_NAMESPACE;
 
+/// The bound of the clamp that guards every matrix bandlight emits: finite
+/// values up to ±1e30 pass unchanged; ±Inf become ±1e30, so a matrix never
+/// computes Inf − Inf or 0 · Inf and never turns an infinite pixel into NaN.
+/// A NaN channel cannot pass an OpenColorIO clamp: OCIO maps it to the
+/// lower bound, so it enters the matrix as −1e30 (the pixel comes out hugely
+/// negative and displays black). docs/robustness.md tabulates every case.
+constexpr double INFINITY_GUARD = 1e30;
+
+/// The guard alone: a RangeTransform clamping to ±INFINITY_GUARD.
+OCIO::RangeTransformRcPtr InfinityGuard();
+
+/// guard, matrix, guard: the form every emitted 3×3 takes (looks, named
+/// transforms, colour spaces, CLF files). The second guard makes the
+/// inverse direction safe too.
+OCIO::GroupTransformRcPtr GuardedMatrixTransform(const Mat3& m);
+
+
 /// A MatrixTransform holding a 3×3 (as OCIO's 4×4 with no offset).
 OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m);
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {
@@ -92,8 +93,10 @@ bool LooksNumeric(const std::string& s)
 }
 
 /// Builds a regular-grid spectrum from increasing (wavelength, value)
-/// pairs; an irregular grid is resampled onto its smallest step.
-Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v)
+/// pairs; an irregular grid is resampled onto its smallest step, which must
+/// not need more than MAX_SPECTRUM_SAMPLES samples.
+Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v,
+                     const std::string& source, size_t lastLine)
 {
     if (wl.size() == 1)
     {
@@ -111,7 +114,16 @@ Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v
         const double step = (wl.back() - wl.front()) / double(wl.size() - 1);
         return Spectrum(wl.front(), step, v);
     }
-    const size_t count = size_t(std::floor((wl.back() - wl.front()) / minStep + 1e-9)) + 1;
+    const double samples = std::floor((wl.back() - wl.front()) / minStep + 1e-9) + 1.0;
+    if (!(samples <= double(MAX_SPECTRUM_SAMPLES)))
+    {
+        Fail(source, lastLine,
+             "irregular wavelengths: resampling " + std::to_string(wl.front()) + "–" +
+                 std::to_string(wl.back()) + " nm onto the smallest step (" +
+                 std::to_string(minStep) + " nm) needs more than " +
+                 std::to_string(MAX_SPECTRUM_SAMPLES) + " samples");
+    }
+    const size_t count = size_t(samples);
     std::vector<double> out(count);
     size_t j = 0;
     for (size_t i = 0; i < count; ++i)
@@ -198,7 +210,7 @@ std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& s
     std::vector<NamedSpectrum> out;
     for (size_t c = 0; c < columns.size(); ++c)
     {
-        out.push_back({names[c], FromSamples(wl, columns[c])});
+        out.push_back({names[c], FromSamples(wl, columns[c], source, lineNo)});
     }
     return out;
 }
@@ -361,7 +373,7 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
         keywordNumber("SPECTRAL_START_NM", FieldWavelength(fields[specColumns.front()].text));
     double end = keywordNumber("SPECTRAL_END_NM", FieldWavelength(fields[specColumns.back()].text));
     const double declaredBands = keywordNumber("SPECTRAL_BANDS", double(bands));
-    if (size_t(declaredBands) != bands)
+    if (declaredBands != double(bands))
     {
         Fail(source, keywords["SPECTRAL_BANDS"].line,
              "SPECTRAL_BANDS says " + keywords["SPECTRAL_BANDS"].text + " but the format has " +
@@ -414,8 +426,10 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
 
 std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source)
 {
-    std::istringstream in(text);
-    if (text.find("BEGIN_DATA_FORMAT") != std::string::npos)
+    std::string checked = text;
+    CheckUtf8Text(checked, source);
+    std::istringstream in(checked);
+    if (checked.find("BEGIN_DATA_FORMAT") != std::string::npos)
     {
         return ReadCgatsSpectra(in, source);
     }
@@ -424,18 +438,7 @@ std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::s
 
 std::vector<NamedSpectrum> ReadSpectraFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-    {
-        throw Exception(path + ": cannot open spectrum file");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-    {
-        throw Exception(path + ": read error");
-    }
-    return ReadSpectraText(text.str(), path);
+    return ReadSpectraText(ReadTextFile(path, "spectrum file"), path);
 }
 
 }  // namespace bandlight

@@ -10,6 +10,10 @@
 namespace bandlight
 {
 
+/// The most samples a spectrum read from a file may need (1 nm steps over
+/// 100 µm; an irregular grid is resampled onto its smallest step).
+constexpr size_t MAX_SPECTRUM_SAMPLES = 100000;
+
 /// A spectrum read from a file, with the identifier the file gives it
 /// (a CSV column header, a CGATS SAMPLE_ID / SAMPLE_NAME, or its 1-based
 /// position when the file names none).

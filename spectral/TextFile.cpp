@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "spectral/TextFile.h"
+
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "spectral/Exception.h"
+
+namespace bandlight
+{
+
+std::string ReadTextFile(const std::string& path, const std::string& what)
+{
+    struct stat st
+    {
+    };
+    if (::stat(path.c_str(), &st) != 0)
+    {
+        throw Exception(path + ": cannot open " + what);
+    }
+    if (!S_ISREG(st.st_mode))
+    {
+        throw Exception(path + ": not a regular file (a " + what + " is a text file)");
+    }
+    if (size_t(st.st_size) > MAX_TEXT_FILE_BYTES)
+    {
+        throw Exception(path + ": " + std::to_string(st.st_size) + " bytes is too large for a " +
+                        what + " (limit " + std::to_string(MAX_TEXT_FILE_BYTES) + ")");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+    {
+        throw Exception(path + ": cannot open " + what);
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+    {
+        throw Exception(path + ": read error");
+    }
+    return text.str();
+}
+
+namespace
+{
+
+std::string HexByte(unsigned char c)
+{
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "0x%02X", unsigned(c));
+    return buf;
+}
+
+}  // namespace
+
+void CheckUtf8Text(std::string& text, const std::string& source)
+{
+    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+    const size_t n = text.size();
+    if ((n >= 2 && ((p[0] == 0xFF && p[1] == 0xFE) || (p[0] == 0xFE && p[1] == 0xFF))) ||
+        (n >= 4 && p[0] == 0 && p[1] == 0 && p[2] == 0xFE && p[3] == 0xFF))
+    {
+        throw Exception(SourcePosition(source, 1) +
+                        ": UTF-16/UTF-32 text (byte-order mark); save the file as UTF-8 or ASCII");
+    }
+    if (n >= 3 && p[0] == 0xEF && p[1] == 0xBB && p[2] == 0xBF)
+    {
+        text.erase(0, 3);
+        p = reinterpret_cast<const unsigned char*>(text.data());
+    }
+    size_t line = 1;
+    for (size_t i = 0; i < text.size();)
+    {
+        const unsigned char c = p[i];
+        if (c == '\n')
+        {
+            ++line;
+        }
+        if (c == 0)
+        {
+            throw Exception(SourcePosition(source, line) +
+                            ": NUL byte: binary data or UTF-16 text, not UTF-8");
+        }
+        if (c < 0x80)
+        {
+            ++i;
+            continue;
+        }
+        // Lead byte: length and the smallest code point it may encode.
+        size_t len = 0;
+        unsigned cp = 0;
+        unsigned minCp = 0;
+        if (c >= 0xC2 && c <= 0xDF)
+        {
+            len = 2, cp = c & 0x1Fu, minCp = 0x80;
+        }
+        else if (c >= 0xE0 && c <= 0xEF)
+        {
+            len = 3, cp = c & 0x0Fu, minCp = 0x800;
+        }
+        else if (c >= 0xF0 && c <= 0xF4)
+        {
+            len = 4, cp = c & 0x07u, minCp = 0x10000;
+        }
+        bool ok = len != 0 && i + len <= text.size();
+        for (size_t k = 1; ok && k < len; ++k)
+        {
+            ok = (p[i + k] & 0xC0u) == 0x80u;
+            cp = (cp << 6) | (p[i + k] & 0x3Fu);
+        }
+        ok = ok && cp >= minCp && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
+        if (!ok)
+        {
+            throw Exception(SourcePosition(source, line) + ": byte " + HexByte(c) +
+                            " is not UTF-8 (Latin-1 or another legacy encoding?); save the file "
+                            "as UTF-8");
+        }
+        i += len;
+    }
+}
+
+}  // namespace bandlight

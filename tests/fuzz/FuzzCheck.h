@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// What every fuzz target asserts: a parser either returns data that is safe
+// to compute with, or throws bandlight::Exception with a message that names
+// the source. Anything else (another exception type, a crash, a sanitizer
+// report, a non-finite value) aborts and libFuzzer saves the input.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "spectral/Exception.h"
+#include "spectral/SpectrumIO.h"
+
+namespace bandlight::fuzz
+{
+
+[[noreturn]] inline void Abort(const std::string& what)
+{
+    std::fprintf(stderr, "fuzz check failed: %s\n", what.c_str());
+    std::abort();
+}
+
+inline void Check(bool ok, const std::string& what)
+{
+    if (!ok)
+    {
+        Abort(what);
+    }
+}
+
+/// A parse error must start with the source name and be one line.
+inline void CheckMessage(const Exception& e, const std::string& source)
+{
+    const std::string m = e.what();
+    Check(m.rfind(source, 0) == 0, "error does not name its source: " + m);
+    Check(m.find('\n') == std::string::npos, "error is not one line: " + m);
+}
+
+/// A spectrum the readers return is on a positive, finite grid with finite values.
+inline void CheckSpectra(const std::vector<NamedSpectrum>& spectra)
+{
+    Check(!spectra.empty(), "reader returned no spectra without an error");
+    for (const NamedSpectrum& s : spectra)
+    {
+        const Spectrum& sp = s.spectrum;
+        Check(sp.size() >= 2, "spectrum with fewer than two samples");
+        Check(std::isfinite(sp.start()) && sp.step() > 0.0 && std::isfinite(sp.step()),
+              "spectrum grid not finite and increasing");
+        for (size_t i = 0; i < sp.size(); ++i)
+        {
+            Check(std::isfinite(sp.values()[i]), "non-finite spectral value");
+        }
+    }
+}
+
+inline std::string Text(const uint8_t* data, size_t size)
+{
+    return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+}  // namespace bandlight::fuzz
