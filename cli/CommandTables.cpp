@@ -99,6 +99,9 @@ void RunTables(const TablesOptions& o)
         j["rule"] = rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact";
         j["matching_functions"][key] = RowsJson(xyz, xyzNames);
         j["matching_functions"]["ebu_rgb"] = RowsJson(rgb, rgbNames);
+        j["condition_number"] = {{key, ConditionNumber(xyz)},
+                                 {"ebu_rgb", ConditionNumber(rgb)},
+                                 {"limit", MAX_BAND_CONDITION}};
         j["illuminants"] = nlohmann::ordered_json::object();
         for (const auto& [name, v] : illuminants)
         {
@@ -136,6 +139,13 @@ void RunTables(const TablesOptions& o)
     {
         PrintRow(rgbLabels[k] + std::string(" (EBU)"), row(rgb, k), 4);
     }
+    const double condition = ConditionNumber(xyz);
+    std::cout << "Condition number of the xyz band matrix: " << Fixed(condition, 2)
+              << (condition > MAX_BAND_CONDITION
+                      ? " (above the limit " + Fixed(MAX_BAND_CONDITION, 0) +
+                            ": band methods refuse this set)"
+                      : " (band methods accept up to " + Fixed(MAX_BAND_CONDITION, 0) + ")")
+              << "\n";
     PrintHeader("Illuminants, band means normalised to the largest band:", bands);
     for (const auto& [name, v] : illuminants)
     {

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "plugin/OcioTransforms.h"
@@ -39,7 +40,12 @@ NamedSpectrum ResolveIlluminant(const std::string& nameOrFile)
     {
         return {nameOrFile, BuiltinIlluminant(nameOrFile)};  // throws, listing the choices
     }
-    return ReadSpectraFile(nameOrFile).front();
+    NamedSpectrum s = ReadSpectraFile(nameOrFile).front();
+    if (const std::string note = CoverageNote(s, nameOrFile, false); !note.empty())
+    {
+        std::cerr << "note: " << note << "\n";
+    }
+    return s;
 }
 
 std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)
@@ -61,7 +67,19 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)
         throw Exception("unknown reflectance '" + nameOrFile +
                         "' (TCS01-TCS15, TCS for all, or a spectrum file)");
     }
-    return ReadSpectraFile(nameOrFile);
+    std::vector<NamedSpectrum> spectra = ReadSpectraFile(nameOrFile);
+    for (const NamedSpectrum& s : spectra)
+    {
+        for (const std::string& note :
+             {CoverageNote(s, nameOrFile, true), RemittanceRangeNote(s, nameOrFile)})
+        {
+            if (!note.empty())
+            {
+                std::cerr << "note: " << note << "\n";
+            }
+        }
+    }
+    return spectra;
 }
 
 CLI::Option* AddObserverOption(CLI::App& app, std::string& value)

@@ -424,6 +424,56 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
     return out;
 }
 
+namespace
+{
+std::string Nm(double v)
+{
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+}  // namespace
+
+std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source,
+                         bool remittance)
+{
+    constexpr double kFirst = 380.0;
+    constexpr double kLast = 780.0;
+    const Spectrum& sp = spectrum.spectrum;
+    const bool low = sp.start() > kFirst + 1e-9;
+    const bool high = sp.end() < kLast - 1e-9;
+    if (!low && !high)
+    {
+        return {};
+    }
+    std::string ranges;
+    if (low)
+    {
+        ranges = Nm(kFirst) + "–" + Nm(std::min(sp.start(), kLast)) + " nm";
+    }
+    if (high)
+    {
+        ranges += (ranges.empty() ? "" : " and ") + Nm(std::max(sp.end(), kFirst)) + "–" +
+                  Nm(kLast) + " nm";
+    }
+    return source + ": " + spectrum.name + " covers " + Nm(sp.start()) + "–" + Nm(sp.end()) +
+           " nm; over " + ranges +
+           (remittance ? " its end values are held constant (CIE 15:2004 §7.2.1)"
+                       : " it is taken as zero");
+}
+
+std::string RemittanceRangeNote(const NamedSpectrum& spectrum, const std::string& source)
+{
+    const std::vector<double>& v = spectrum.spectrum.values();
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    if (v.empty() || (*lo >= 0.0 && *hi <= 1.0))
+    {
+        return {};
+    }
+    return source + ": " + spectrum.name + " has remittance values outside [0, 1] (" + Nm(*lo) +
+           " to " + Nm(*hi) + "): used as given, not clipped";
+}
+
 std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source)
 {
     std::string checked = text;

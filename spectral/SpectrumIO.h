@@ -46,4 +46,15 @@ std::vector<NamedSpectrum> ReadSpectraFile(const std::string& path);
 /// The same for text already in memory (used for the embedded tables).
 std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source);
 
+/// What the spectral core assumes where a spectrum read from `source` ends
+/// short of the visible range 380–780 nm, as one line for the user, or ""
+/// when it covers that range: a remittance's end values are held constant
+/// (CIE 15:2004 §7.2.1), an illuminant or emission is zero there.
+std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source,
+                         bool remittance);
+
+/// A note when a remittance leaves [0, 1] (measured data: noise below 0,
+/// fluorescent whitening above 1), or "": such values are used as given.
+std::string RemittanceRangeNote(const NamedSpectrum& spectrum, const std::string& source);
+
 }  // namespace bandlight

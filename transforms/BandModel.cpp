@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <Eigen/LU>
@@ -149,6 +150,24 @@ double ConditionNumber(const Eigen::MatrixXd& m)
     return smin > 0.0 ? s(0) / smin : std::numeric_limits<double>::infinity();
 }
 
+void CheckBandCondition(const BandSet& bands, double condition)
+{
+    if (!std::isfinite(condition))
+    {
+        throw Exception("band matrix for bands " + bands.describe() + " nm is singular");
+    }
+    if (condition > MAX_BAND_CONDITION)
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.3g", condition);
+        throw Exception("band matrix for bands " + bands.describe() + " nm is ill-conditioned: " +
+                        "condition number " + buf + " exceeds the limit " +
+                        std::to_string(int(MAX_BAND_CONDITION)) +
+                        " (band values would amplify pixel errors that much); widen the bands "
+                        "the matching functions barely see");
+    }
+}
+
 BandMatrix3 BandToColourMatrix(const BandSet& bands, MatchingSet set, Observer observer,
                                BandRule rule)
 {
@@ -160,10 +179,7 @@ BandMatrix3 BandToColourMatrix(const BandSet& bands, MatchingSet set, Observer o
     BandMatrix3 out;
     out.toColour = MatchingBandMatrix(bands, set, observer, rule);
     out.conditionNumber = ConditionNumber(out.toColour);
-    if (!std::isfinite(out.conditionNumber))
-    {
-        throw Exception("band matrix for bands " + bands.describe() + " is singular");
-    }
+    CheckBandCondition(bands, out.conditionNumber);
     out.fromColour = out.toColour.inverse();
     return out;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/LU>
@@ -43,10 +44,8 @@ BandBasis MakeBandBasis(const BandSet& bands, Observer observer)
     out.b = MatchingBandMatrix(bands, MatchingSet::XYZ, observer);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(out.b, Eigen::ComputeThinU | Eigen::ComputeThinV);
     const auto& s = svd.singularValues();
-    if (s(s.size() - 1) <= 1e-12 * s(0))
-    {
-        throw Exception("band matrix for bands " + bands.describe() + " is singular");
-    }
+    CheckBandCondition(bands, s(s.size() - 1) > 0.0 ? s(0) / s(s.size() - 1)
+                                                     : std::numeric_limits<double>::infinity());
     out.pinv = svd.matrixV() * s.cwiseInverse().asDiagonal() * svd.matrixU().transpose();
     return out;
 }
@@ -314,6 +313,12 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
         // Keep the exposure: the band model's white under `from` keeps its Y.
         const double y1 = (basis.b * e1)(1);
         const double y2 = (basis.b * e2)(1);
+        if (!(y1 > 0.0) || !(y2 > 0.0))
+        {
+            throw Exception("band model: " + std::string(y1 > 0.0 ? to.name : from.name) +
+                            " has no luminance in bands " + bands.describe() +
+                            " nm: the exposure cannot be kept");
+        }
         ratio *= y1 / y2;
     }
     else

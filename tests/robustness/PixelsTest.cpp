@@ -123,7 +123,7 @@ TEST_CASE("Denormals and zero through a matrix stay tiny and signed, never NaN",
     CHECK(out.cwiseAbs().maxCoeff() < 1e-40);  // flushed to 0 or kept denormal
 }
 
-TEST_CASE("upsample's LUT: shaper clamps the input, NaN to its minimum; output always finite",
+TEST_CASE("upsample's LUT: shaper clamps the input, NaN to its minimum, output always finite",
           "[robustness][pixels]")
 {
     const ShaperSpec shaper = ShaperSpec::ForNonLinear();
