@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
 
 #include "cli/Common.h"
@@ -21,6 +22,9 @@ namespace bandlight::cli
 
 namespace
 {
+
+/// Scene coordinates beyond this are refused: squared distances stay finite.
+constexpr double kMaxCoordinate = 1e9;
 
 /// Reading context: the file for messages and relative paths.
 struct Reader
@@ -87,13 +91,30 @@ struct Reader
         return v;
     }
 
+    /// An image size: a whole number of pixels, 1 to 16384.
+    int pixels(const YAML::Node& n, const std::string& what) const
+    {
+        const double v = number(n, what);
+        if (!(v >= 1.0 && v <= 16384.0) || v != std::floor(v))
+        {
+            fail(n, what + " must be a whole number of pixels from 1 to 16384, got " + n.Scalar());
+        }
+        return int(v);
+    }
+
     Vec3 vec3(const YAML::Node& n, const std::string& what) const
     {
         if (!n.IsSequence() || n.size() != 3)
         {
             fail(n, what + " must be a list of three numbers [x, y, z]");
         }
-        return Vec3(number(n[0], what), number(n[1], what), number(n[2], what));
+        const Vec3 v(number(n[0], what), number(n[1], what), number(n[2], what));
+        if (v.cwiseAbs().maxCoeff() > kMaxCoordinate)
+        {
+            fail(n, what + " must lie within ±1e9 (got a coordinate of " +
+                        std::to_string(v.cwiseAbs().maxCoeff()) + ")");
+        }
+        return v;
     }
 
     std::vector<double> numbers(const YAML::Node& n, const std::string& what) const
@@ -451,9 +472,9 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
         if (c["fov"])
             s.camera.fovDeg = r.positive(c["fov"], "fov");
         if (c["width"])
-            s.camera.width = int(r.positive(c["width"], "width"));
+            s.camera.width = r.pixels(c["width"], "width");
         if (c["height"])
-            s.camera.height = int(r.positive(c["height"], "height"));
+            s.camera.height = r.pixels(c["height"], "height");
         if (s.camera.fovDeg >= 180.0)
         {
             r.fail(c["fov"], "fov must be below 180 degrees");
@@ -465,6 +486,11 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
         if ((s.camera.lookAt - s.camera.position).norm() < 1e-12)
         {
             r.fail(c, "camera look_at equals its position");
+        }
+        if (!((s.camera.lookAt - s.camera.position).normalized().cross(s.camera.up).norm() >
+              1e-9 * s.camera.up.norm()))
+        {
+            r.fail(c["up"] ? c["up"] : c, "camera up is zero or parallel to the view direction");
         }
     }
 
@@ -573,6 +599,10 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
                 Sphere sphere;
                 sphere.center = sp["center"] ? r.vec3(sp["center"], "sphere center") : Vec3::Zero();
                 sphere.radius = sp["radius"] ? r.positive(sp["radius"], "sphere radius") : 1.0;
+                if (sphere.radius > kMaxCoordinate)
+                {
+                    r.fail(sp["radius"], "sphere radius must not exceed 1e9");
+                }
                 sphere.material = it->second;
                 s.spheres.push_back(sphere);
             }

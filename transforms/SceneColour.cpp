@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include <Eigen/Geometry>
 #include <sstream>
 
 #include <Eigen/LU>
@@ -250,6 +252,65 @@ void CheckScene(const Scene& s)
     if (s.camera.width <= 0 || s.camera.height <= 0)
     {
         throw Exception("the image size must be positive");
+    }
+    // Degenerate geometry is refused here, so that the renderer never
+    // normalises a zero vector (the scene reader says the same with a line).
+    const Camera& c = s.camera;
+    if (!c.position.allFinite() || !c.lookAt.allFinite() || !c.up.allFinite())
+    {
+        throw Exception("the camera's position, look_at and up must be finite");
+    }
+    const Vec3 forward = c.lookAt - c.position;
+    if (!(forward.norm() > 1e-12))
+    {
+        throw Exception("the camera's look_at equals its position");
+    }
+    if (!(forward.normalized().cross(c.up).norm() > 1e-9 * c.up.norm()) || !(c.up.norm() > 0.0))
+    {
+        throw Exception("the camera's up vector is zero or parallel to its view direction");
+    }
+    if (!(c.fovDeg > 0.0 && c.fovDeg < 180.0))
+    {
+        throw Exception("the camera's field of view must lie between 0 and 180 degrees");
+    }
+    for (const Sphere& sp : s.spheres)
+    {
+        if (!sp.center.allFinite() || !(sp.radius > 0.0) || !std::isfinite(sp.radius))
+        {
+            throw Exception("a sphere needs a finite centre and a positive, finite radius");
+        }
+    }
+    for (const Plane& p : s.planes)
+    {
+        if (!p.point.allFinite() || !p.normal.allFinite() ||
+            !(std::abs(p.normal.norm() - 1.0) < 1e-6))
+        {
+            throw Exception("a plane needs a finite point and a unit normal (zero-length normals "
+                            "have no direction)");
+        }
+    }
+    for (const SceneLight& l : s.lights)
+    {
+        if (!std::isfinite(l.intensity) || l.intensity < 0.0)
+        {
+            throw Exception("a light's intensity must be finite and not negative");
+        }
+        if (l.kind == SceneLight::Kind::DIRECTIONAL && !(l.direction.norm() > 1e-12))
+        {
+            throw Exception("a directional light needs a non-zero direction");
+        }
+        if (!l.position.allFinite() || !l.direction.allFinite() || !l.attenuation.allFinite())
+        {
+            throw Exception("a light's position, direction and attenuation must be finite");
+        }
+    }
+    for (const SceneMaterial& m : s.materials)
+    {
+        if (!(m.exponent >= 0.0) || !std::isfinite(m.exponent))
+        {
+            throw Exception("material '" + m.name + "': the Phong exponent must be finite and not "
+                            "negative");
+        }
     }
 }
 

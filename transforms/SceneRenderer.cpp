@@ -135,7 +135,8 @@ Factors LightFactors(const SceneLight& l, const Hit& hit, const Vec3& toEye, dou
         toLight /= dist;
     }
     ++c.lightTerms;
-    const double cosA = toLight.dot(hit.normal);
+    // Back-facing and grazing lights give nothing; rounding cannot push cos α past 1.
+    const double cosA = std::min(toLight.dot(hit.normal), 1.0);
     if (!(cosA > 0.0))
     {
         return {};
