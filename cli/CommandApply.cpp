@@ -30,14 +30,7 @@ OCIO::ConstConfigRcPtr LoadConfig(const std::string& path)
 {
     const std::string file =
         path.size() > 5 && path.substr(path.size() - 5) == ".ocio" ? path : path + "/config.ocio";
-    try
-    {
-        return OCIO::Config::CreateFromFile(file.c_str());
-    }
-    catch (const OCIO::Exception& e)
-    {
-        throw Exception(file + ": cannot read config: " + e.what());
-    }
+    return ReadConfigFile(file);
 }
 
 void RunApply(const ApplyOptions& o)

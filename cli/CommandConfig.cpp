@@ -47,15 +47,7 @@ void RunConfig(const ConfigCommandOptions& o)
     }
     else
     {
-        OCIO::ConstConfigRcPtr base;
-        try
-        {
-            base = OCIO::Config::CreateFromFile(o.base.c_str());
-        }
-        catch (const OCIO::Exception& e)
-        {
-            throw Exception(o.base + ": cannot read the base config: " + e.what());
-        }
+        const OCIO::ConstConfigRcPtr base = ReadConfigFile(o.base);
         package = ExtendConfig(base, options, o.workingSpace.empty(), &identified);
     }
     WriteConfigPackage(package, o.out);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <regex>
 #include <sstream>
 
 #include "plugin/OcioTransforms.h"
@@ -80,6 +81,37 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)
         }
     }
     return spectra;
+}
+
+OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file)
+{
+    try
+    {
+        return OCIO_NAMESPACE::Config::CreateFromFile(file.c_str());
+    }
+    catch (const OCIO_NAMESPACE::Exception& e)
+    {
+        // "Error: Loading the OCIO profile 'F' failed. At line 6, ..." or
+        // "... yaml-cpp: error at line 8, column 1: ...": keep what went wrong,
+        // and put the line where every other parse error has it.
+        std::string what = e.what();
+        const std::string failed = "' failed. ";
+        if (const size_t at = what.find(failed); at != std::string::npos)
+        {
+            what = what.substr(at + failed.size());
+        }
+        std::smatch m;
+        size_t line = 0;
+        if (std::regex_search(what, m, std::regex("[Ll]ine ([0-9]+)")))
+        {
+            line = size_t(std::stoul(m[1].str()));
+        }
+        for (char& c : what)
+        {
+            c = c == '\n' ? ' ' : c;
+        }
+        throw Exception(SourcePosition(file, line) + ": cannot read the config: " + what);
+    }
 }
 
 CLI::Option* AddObserverOption(CLI::App& app, std::string& value)

@@ -42,6 +42,10 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
 OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bool* isMatrix);
 
 /// Splits "a,b,c" into its non-empty items.
+/// Reads an OCIO config file. OpenColorIO's errors become one line
+/// "FILE:LINE: cannot read the config: ..." (LINE when OCIO names one).
+OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file);
+
 std::vector<std::string> SplitList(const std::string& text);
 
 /// Formats a double with `decimals` places for tables.

@@ -649,7 +649,13 @@ Scene ReadSceneText(const std::string& text, const std::string& path)
         // Syntax errors, and a value of the wrong kind where the reader asks
         // yaml-cpp for a string (a list where a name belongs).
         const size_t line = e.mark.is_null() ? 0 : size_t(e.mark.line) + 1;
-        throw Exception(SourcePosition(path, line) + ": " + e.msg);
+        // yaml-cpp says only "bad conversion" when a list or mapping stands
+        // where the reader asked for a single value.
+        const std::string what =
+            e.msg == YAML::ErrorMsg::BAD_CONVERSION
+                ? "expected a single value (a name or a number) here, not a list or mapping"
+                : e.msg;
+        throw Exception(SourcePosition(path, line) + ": " + what);
     }
 }
 

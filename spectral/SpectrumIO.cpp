@@ -17,6 +17,13 @@ namespace bandlight
 namespace
 {
 
+std::string Nm(double v)
+{
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
 [[noreturn]] void Fail(const std::string& source, size_t line, const std::string& what)
 {
     throw Exception(SourcePosition(source, line) + ": " + what);
@@ -35,7 +42,11 @@ double ParseNumber(const std::string& token, const std::string& source, size_t l
     {
         Fail(source, line, std::string("expected a number for ") + what + ", got '" + token + "'");
     }
-    if (!std::isfinite(v) || errno == ERANGE)
+    if (std::isnan(v))
+    {
+        Fail(source, line, std::string("NaN ('") + token + "') is not allowed for " + what);
+    }
+    if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0))
     {
         Fail(source, line, std::string("value out of range for ") + what + ": '" + token + "'");
     }
@@ -189,8 +200,8 @@ std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& s
         if (!wl.empty() && !(w > wl.back()))
         {
             Fail(source, lineNo,
-                 "wavelengths must increase: " + cells[0] + " nm follows " +
-                     std::to_string(wl.back()) + " nm");
+                 "wavelengths must increase: " + cells[0] + " nm follows " + Nm(wl.back()) +
+                     " nm");
         }
         if (w <= 0.0)
         {
@@ -423,16 +434,6 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
     }
     return out;
 }
-
-namespace
-{
-std::string Nm(double v)
-{
-    std::ostringstream o;
-    o << v;
-    return o.str();
-}
-}  // namespace
 
 std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source,
                          bool remittance)
