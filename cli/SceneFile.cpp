@@ -35,7 +35,7 @@ struct Reader
     [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const
     {
         throw Exception(SourcePosition(path, n.Mark().is_null() ? 0 : size_t(n.Mark().line) + 1) +
-                        ": " + what);
+                        ": " + OneLine(what));
     }
 
     void keys(const YAML::Node& map, const std::string& where,
@@ -655,7 +655,7 @@ Scene ReadSceneText(const std::string& text, const std::string& path)
             e.msg == YAML::ErrorMsg::BAD_CONVERSION
                 ? "expected a single value (a name or a number) here, not a list or mapping"
                 : e.msg;
-        throw Exception(SourcePosition(path, line) + ": " + what);
+        throw Exception(SourcePosition(path, line) + ": " + OneLine(what));
     }
 }
 

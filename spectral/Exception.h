@@ -15,6 +15,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// `text` with line breaks and other control characters written as escapes
+/// ("\\n", "\\x01"), so that a value quoted from a file keeps a message on one line.
+std::string OneLine(const std::string& text);
+
 /// Formats "FILE:LINE: what" (LINE omitted when 0), the prefix every parse error uses.
 std::string SourcePosition(const std::string& source, size_t line);
 

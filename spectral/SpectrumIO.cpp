@@ -26,7 +26,7 @@ std::string Nm(double v)
 
 [[noreturn]] void Fail(const std::string& source, size_t line, const std::string& what)
 {
-    throw Exception(SourcePosition(source, line) + ": " + what);
+    throw Exception(SourcePosition(source, line) + ": " + OneLine(what));
 }
 
 /// Parses a whole token as a finite double; NaN, Inf and trailing garbage
