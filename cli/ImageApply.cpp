@@ -10,6 +10,7 @@
 #include <regex>
 #include <thread>
 
+#include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::cli
@@ -123,6 +124,7 @@ const ImageFilesApi& ImageFiles()
                 auto entry = reinterpret_cast<Entry>(::dlsym(h, "bandlight_image_files_api"));
                 if (entry && entry()->version == kImageFilesApiVersion)
                 {
+                    AlsoOnInterrupt(entry()->removeTemporaryFiles);
                     return entry();
                 }
             }

@@ -34,9 +34,12 @@ struct ImageFilesApi
     std::string (*write)(const std::string& path, const float* pixels, int width, int height,
                          int channels, const std::vector<std::string>& channelNames,
                          const std::string& colorSpace, PixelType type);
+    /// Removes the module's temporary files in flight (async-signal-safe):
+    /// the module carries its own copy of AtomicFile's registry.
+    void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 1;
+constexpr int kImageFilesApiVersion = 2;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

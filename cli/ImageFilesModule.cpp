@@ -122,7 +122,8 @@ std::string WriteImage(const std::string& path, const float* pixels, int width, 
     }
 }
 
-const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage};
+const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage,
+                            &RemoveTemporaryFiles};
 
 }  // namespace
 }  // namespace bandlight::cli

@@ -7,10 +7,14 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "cli/Commands.h"
+#include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
 int main(int argc, char** argv)
 {
+    // An interrupted run leaves every previous output as it was, and no
+    // temporary files behind.
+    bandlight::RemoveTemporaryFilesOnInterrupt();
     CLI::App app{
         "bandlight: the 3-band model of coloured light and surfaces, measured against an exact "
         "spectral core"};

@@ -36,7 +36,24 @@ private:
     std::string m_temp;
     std::ofstream m_stream;
     bool m_committed = false;
+    int m_slot = -1;  ///< registration for RemoveTemporaryFilesOnInterrupt()
 };
+
+/// Installs SIGINT, SIGTERM and SIGHUP handlers that remove the temporary
+/// files of every AtomicFile not yet committed, then end the process with
+/// the signal's default action. The previous outputs stay as they were.
+/// (SIGKILL cannot be caught: it leaves a "<stem>.tmp-<pid><ext>" beside
+/// the untouched output.) Call once, early in main().
+void RemoveTemporaryFilesOnInterrupt();
+
+/// Removes the temporary files of every AtomicFile not yet committed
+/// (async-signal-safe: what the interrupt handlers call).
+void RemoveTemporaryFiles() noexcept;
+
+/// Registers one more cleanup for the interrupt handlers: a loaded module's
+/// own RemoveTemporaryFiles (a module linking this library has its own
+/// registry). At most a few; async-signal-safe functions only.
+void AlsoOnInterrupt(void (*cleanup)() noexcept);
 
 /// Writes a file through AtomicFile with a callback that fills the stream.
 void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
