@@ -10,6 +10,7 @@ packages=(
   catch2 libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libbenchmark-dev gnuplot-nox
   colord-data argyll-ref argyll
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -409,6 +409,10 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
                  std::to_string(nf) + " fields (truncated row?)");
     }
     const size_t sets = data.size() / nf;
+    if (sets == 0)
+    {
+        Fail(source, 0, "the spectral table holds no data sets (empty BEGIN_DATA ... END_DATA)");
+    }
     const auto declaredSets = keywords.find("NUMBER_OF_SETS");
     if (declaredSets != keywords.end() &&
         ParseNumber(declaredSets->second.text, source, declaredSets->second.line,

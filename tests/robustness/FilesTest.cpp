@@ -56,6 +56,8 @@ TEST_CASE("Malformed files: one line naming file and line, exit 2, nothing writt
         {"truncated.sp", xyz, ":9: BEGIN_DATA without END_DATA (truncated file?)"},
         {"wrong_sets.sp", xyz, ":5: NUMBER_OF_SETS says 3 but the data has 2 sets"},
         {"nan_value.sp", xyz, ":6: NaN ('NaN') is not allowed for SPEC_385"},
+        {"no_sets.sp", xyz,
+         ": the spectral table holds no data sets (empty BEGIN_DATA ... END_DATA)"},
         {"bad_bands.sp", xyz, ":2: SPECTRAL_BANDS says 1e300 but the format has 3 SPEC_ fields"},
         {"truncated.yaml", render.c_str(), ":3: end of map flow not found"},
         {"non_numeric.yaml", render.c_str(), ":4: intensity must be a number, got 'lots'"},
