@@ -19,7 +19,7 @@ namespace OCIO = OCIO_NAMESPACE;
 /// A NaN channel cannot pass an OpenColorIO clamp: OCIO maps it to the
 /// lower bound, so it enters the matrix as −1e30 (the pixel comes out hugely
 /// negative and displays black). docs/robustness.md tabulates every case.
-constexpr double INFINITY_GUARD = 1e30;
+constexpr double INFINITY_GUARD = PIXEL_GUARD;
 
 /// The guard alone: a RangeTransform clamping to ±INFINITY_GUARD.
 OCIO::RangeTransformRcPtr InfinityGuard();

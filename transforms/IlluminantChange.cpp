@@ -374,13 +374,22 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
 Relighter::~Relighter() = default;
 Relighter::Relighter(Relighter&&) noexcept = default;
 
+Vec3 GuardPixel(const Vec3& rgb) noexcept
+{
+    Vec3 out;
+    for (int c = 0; c < 3; ++c)
+    {
+        out[c] = std::isnan(rgb[c]) ? -PIXEL_GUARD : std::clamp(rgb[c], -PIXEL_GUARD, PIXEL_GUARD);
+    }
+    return out;
+}
+
 Vec3 Relighter::apply(const Vec3& rgb) const
 {
-    if (m_linear)
-    {
-        return m_matrix * rgb;
-    }
-    return UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, rgb);
+    const Vec3 in = GuardPixel(rgb);
+    const Vec3 out = m_linear ? Vec3(m_matrix * in)
+                              : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
+    return GuardPixel(out);
 }
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
@@ -392,10 +401,11 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
         for (size_t i = begin; i < end; ++i)
         {
             float* p = rgb + 3 * i;
-            const Vec3 in(p[0], p[1], p[2]);
-            const Vec3 out = m_linear ? Vec3(m_matrix * in)
-                                      : UpsampleRelight(m_spectral->upsampler, m_spectral->to,
-                                                        m_matrix, in, &warm, &cache);
+            const Vec3 in = GuardPixel(Vec3(p[0], p[1], p[2]));
+            const Vec3 out = GuardPixel(m_linear ? Vec3(m_matrix * in)
+                                                 : UpsampleRelight(m_spectral->upsampler,
+                                                                   m_spectral->to, m_matrix, in,
+                                                                   &warm, &cache));
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());

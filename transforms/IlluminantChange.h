@@ -91,6 +91,17 @@ struct Light
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
                             const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
 
+/// The bound every pixel path clamps to: ±Inf become ±1e30 and NaN −1e30
+/// before a matrix (so no matrix computes Inf − Inf), and results are
+/// clamped to ±1e30. The OCIO transforms do the same with RangeTransforms
+/// (OCIO's clamp sends NaN to its lower bound); finite pixels below the
+/// bound pass unchanged. docs/robustness.md tabulates the cases.
+constexpr double PIXEL_GUARD = 1e30;
+
+/// A pixel as the guard sees it: each channel clamped to ±PIXEL_GUARD, NaN
+/// to −PIXEL_GUARD.
+Vec3 GuardPixel(const Vec3& rgb) noexcept;
+
 /// An illuminant change ready to apply to pixels: a 3×3 for the linear
 /// methods, the per-pixel spectral fit for upsample.
 class Relighter
@@ -107,7 +118,8 @@ public:
     /// for pixels with no positive channel (the metamer matrix).
     const Mat3& matrix() const noexcept { return m_matrix; }
 
-    /// One pixel, working RGB under `from` → as if under `to`.
+    /// One pixel, working RGB under `from` → as if under `to`; any input,
+    /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
     Vec3 apply(const Vec3& rgb) const;
     /// `count` interleaved RGB float triples in place, on `threads` threads
     /// (0: all cores), neighbours warm-starting each other's fits.

@@ -233,3 +233,36 @@ TEST_CASE("bandlight apply gives the same defined results on a float EXR of hard
         }
     }
 }
+
+TEST_CASE("The direct path (Relighter) matches the OCIO transforms on hard values",
+          "[robustness][pixels]")
+{
+    const RgbSpace& working = FindRgbSpace("acescg");
+    for (const std::string& name : AllMethodNames())
+    {
+        const MethodSpec method = ParseMethod(name);
+        const Relighter relighter(A(), D65(), method, working);
+        std::vector<float> buffer;
+        for (const HardPixel& p : HardPixels())
+        {
+            buffer.insert(buffer.end(), {p.rgb[0], p.rgb[1], p.rgb[2]});
+        }
+        relighter.apply(buffer.data(), HardPixels().size(), 1);
+        const auto cpu = method.isLinear()
+                             ? Cpu(IlluminantChangeTransform(A(), D65(), method, working))
+                             : nullptr;
+        for (size_t i = 0; i < HardPixels().size(); ++i)
+        {
+            const HardPixel& p = HardPixels()[i];
+            INFO(name << ": " << p.label);
+            const Vec3 one = relighter.apply(p.rgb.cast<double>());
+            const Vec3 many(buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]);
+            CHECK(one.allFinite());
+            CHECK(many.allFinite());
+            if (cpu)
+            {
+                CHECK(Close(one, Run(cpu, p.rgb), 2e-6));
+            }
+        }
+    }
+}
