@@ -62,7 +62,8 @@ void RunLut(const LutCommandOptions& o, bool sizeGiven)
         std::cout << "the exact 3x3 matrix\n";
         return;
     }
-    std::cout << o.size << "^3 3D LUT, shaper " << options.shaper.describe() << "\n";
+    std::cout << o.size << "^3 3D LUT, shaper " << options.shaper.alignedTo(o.size).describe()
+              << "\n";
     if (!files.shaper.empty())
     {
         std::cout << "Wrote " << files.shaper

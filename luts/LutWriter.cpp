@@ -178,13 +178,14 @@ PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact)
     };
 }
 
-std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& shaper, int size,
+std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& requested, int size,
                                bool encodeOutput)
 {
     if (size < 2 || size > 129)
     {
         throw Exception("3D LUT size must be 2 to 129, got " + std::to_string(size));
     }
+    const ShaperSpec shaper = requested.alignedTo(size);
     const size_t n = size_t(size) * size_t(size) * size_t(size);
     std::vector<float> rgb(3 * n);
     for (size_t i = 0; i < n; ++i)
@@ -220,9 +221,10 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
     return LatticeTransform(PixelFunctionOf(exact), shaper, size);
 }
 
-OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const ShaperSpec& shaper,
+OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const ShaperSpec& requested,
                                            int size)
 {
+    const ShaperSpec shaper = requested.alignedTo(size);
     // Shaper-encoded out as well as in: along any ray from black the exact
     // transform is then linear in the LUT's coordinates in the log segment
     // (and affine in the linear one), which is what tetrahedral
@@ -275,8 +277,10 @@ LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const L
     return WriteLut(PixelFunctionOf(exact), withDescription, path);
 }
 
-LutFiles WriteLut(const PixelFunction& exact, const LutOptions& o, const std::string& path)
+LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const std::string& path)
 {
+    LutOptions o = requested;
+    o.shaper = requested.shaper.alignedTo(requested.size);
     LutFiles files;
     files.lut = path;
     files.lattice = true;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "luts/Shaper.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -62,6 +63,26 @@ std::string ShaperSpec::describe() const
       << breakLinear << ", log2 above; input outside " << minLinear << " to " << maxLinear
       << " is clamped to it, NaN to " << minLinear;
     return o.str();
+}
+
+ShaperSpec ShaperSpec::alignedTo(int size) const
+{
+    if (kind == Kind::NONE || size < 3 || !(minLinear < 0.0))
+    {
+        return *this;
+    }
+    // With u = -min / (ln2 · b) the stops of the linear toe below zero and
+    // C = log2(max / b) + 1/ln2, zero encodes to u / (C + u). Choose u so
+    // that this is k / (size - 1) for the nearest k >= 1.
+    const double ln2 = std::log(2.0);
+    const double b = breakLinear;
+    const double c = std::log2(maxLinear / b) + 1.0 / ln2;
+    const double u = -minLinear / (ln2 * b);
+    const double n = double(size - 1);
+    const double k = std::max(1.0, std::round(n * u / (c + u)));
+    ShaperSpec out = *this;
+    out.minLinear = -(k * c / (n - k)) * ln2 * b;
+    return out;
 }
 
 OCIO::TransformRcPtr ShaperSpec::transform() const

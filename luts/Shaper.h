@@ -48,6 +48,13 @@ struct ShaperSpec
         return s;
     }
 
+    /// This shaper with minLinear moved (by a few per cent, never above
+    /// zero) so that linear 0 falls exactly on a node of a size-point
+    /// lattice: black then maps to exactly the exact transform's black
+    /// rather than to an interpolation between its neighbours. Every lattice
+    /// bandlight bakes uses the aligned shaper, and describe() reports it.
+    ShaperSpec alignedTo(int size) const;
+
     /// "log2" or "none"; throws Exception otherwise.
     static ShaperSpec Parse(const std::string& text);
 

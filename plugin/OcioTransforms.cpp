@@ -72,7 +72,7 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
     {
         return Group(relighter->matrix(), name, description);
     }
-    const ShaperSpec shaper = ShaperSpec::ForNonLinear();
+    const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(lutSize);
     OCIO::GroupTransformRcPtr g = LatticeTransform(
         [relighter](float* rgb, size_t count) { relighter->apply(rgb, count); }, shaper, lutSize);
     OCIO::FormatMetadata& md = g->getFormatMetadata();

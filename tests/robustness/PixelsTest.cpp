@@ -126,7 +126,7 @@ TEST_CASE("Denormals and zero through a matrix stay tiny and signed, never NaN",
 TEST_CASE("upsample's LUT: shaper clamps the input, NaN to its minimum, output always finite",
           "[robustness][pixels]")
 {
-    const ShaperSpec shaper = ShaperSpec::ForNonLinear();
+    const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(33);
     const auto cpu = Cpu(
         IlluminantChangeTransform(A(), D65(), ParseMethod("upsample"), FindRgbSpace("acescg")));
     for (const HardPixel& p : HardPixels())
@@ -141,6 +141,37 @@ TEST_CASE("upsample's LUT: shaper clamps the input, NaN to its minimum, output a
     }
     // And the shaper says so, in the transform's own description.
     CHECK_THAT(shaper.describe(), Catch::Contains("is clamped to it, NaN to"));
+}
+
+TEST_CASE("Black stays black through every lattice: 0 lies on a node of the aligned shaper",
+          "[robustness][pixels][luts]")
+{
+    for (int size : {17, 33, 65})
+    {
+        for (const ShaperSpec& s : {ShaperSpec(), ShaperSpec::ForNonLinear()})
+        {
+            const ShaperSpec a = s.alignedTo(size);
+            INFO("size " << size << ", min " << a.minLinear);
+            const double node = a.encode(0.0) * (size - 1);
+            CHECK(node == Approx(std::round(node)).margin(1e-9));
+            CHECK(node >= 1.0);
+            CHECK(a.minLinear < 0.0);
+            // A nudge of the toe, not a new range: at most a few thousandths.
+            CHECK(a.minLinear > -0.005);
+            CHECK(a.alignedTo(size).minLinear == Approx(a.minLinear).epsilon(1e-12));
+        }
+    }
+    for (const char* method : {"bradford", "upsample"})
+    {
+        INFO(method);
+        const auto exact =
+            IlluminantChangeTransform(A(), D65(), ParseMethod(method), FindRgbSpace("acescg"));
+        const auto cpu = ParseMethod(method).isLinear()
+                             ? Cpu(LatticeTransform(OCIO::ConstTransformRcPtr(exact), ShaperSpec(), 33))
+                             : Cpu(exact);
+        const Vec3 black = Run(cpu, Vec3f(0.0f, 0.0f, 0.0f));
+        CHECK(black.cwiseAbs().maxCoeff() < 1e-7);
+    }
 }
 
 TEST_CASE("Every LUT format read back through OCIO: the shaper's clamp, never NaN",
@@ -178,8 +209,9 @@ TEST_CASE("Every LUT format read back through OCIO: the shaper's clamp, never Na
         for (const HardPixel& p : HardPixels())
         {
             INFO(ext << ": " << p.label);
-            const Vec3f clamped(ShaperClamp(p.rgb[0], o.shaper), ShaperClamp(p.rgb[1], o.shaper),
-                                ShaperClamp(p.rgb[2], o.shaper));
+            const ShaperSpec shaper = o.shaper.alignedTo(o.size);
+            const Vec3f clamped(ShaperClamp(p.rgb[0], shaper), ShaperClamp(p.rgb[1], shaper),
+                                ShaperClamp(p.rgb[2], shaper));
             const Vec3 out = Run(cpu, p.rgb);
             CHECK(out.allFinite());
             CHECK(Close(out, Run(cpu, clamped), 1e-5));
