@@ -75,7 +75,7 @@ TEST_CASE("Malformed scenes: file and line, exit 2, nothing written", "[cli][sce
     const std::vector<Case> cases = {
         {kGood + "colour: red\n", ":9: unknown key 'colour' in the scene"},
         {"camera: {width: -4}\n" + kGood.substr(kGood.find('\n') + 1),
-         ":1: width must be positive, got -4"},
+         ":1: width must be a whole number of pixels from 1 to 16384, got -4"},
         {"camera: {fov: wide}\n" + kGood.substr(kGood.find('\n') + 1),
          ":1: fov must be a number, got 'wide'"},
         {kGood.substr(0, kGood.find("materials:")) +

@@ -59,7 +59,7 @@ TEST_CASE("CSV spectra: errors name the file, the line and the value", "[spectra
     CHECK_THROWS_WITH(Csv("w,a\n400,0.1\n405,abc\n"),
                       "test.csv:3: expected a number for a spectral value, got 'abc'");
     CHECK_THROWS_WITH(Csv("w,a\n400,0.1\n405,nan\n"),
-                      "test.csv:3: value out of range for a spectral value: 'nan'");
+                      "test.csv:3: NaN ('nan') is not allowed for a spectral value");
     CHECK_THROWS_WITH(Csv("w,a\n400,0.1\n405,1e999\n"), Contains("test.csv:3: value out of range"));
     CHECK_THROWS_WITH(Csv("w,a\n400,0.1\n405\n"), "test.csv:3: expected 2 columns, got 1 in '405'");
     CHECK_THROWS_WITH(Csv("w,a\n400,0.1\n400,0.2\n"),
