@@ -326,4 +326,27 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     return files;
 }
 
+OCIO::GroupTransformRcPtr ReadLutFiles(const LutFiles& files)
+{
+    OCIO::GroupTransformRcPtr chain = OCIO::GroupTransform::Create();
+    if (!files.shaper.empty())
+    {
+        OCIO::FileTransformRcPtr s = OCIO::FileTransform::Create();
+        s->setSrc(files.shaper.c_str());
+        chain->appendTransform(s);
+    }
+    OCIO::FileTransformRcPtr l = OCIO::FileTransform::Create();
+    l->setSrc(files.lut.c_str());
+    l->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+    chain->appendTransform(l);
+    if (files.outputEncoded && !files.shaper.empty())
+    {
+        OCIO::FileTransformRcPtr inv = OCIO::FileTransform::Create();
+        inv->setSrc(files.shaper.c_str());
+        inv->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+        chain->appendTransform(inv);
+    }
+    return chain;
+}
+
 }  // namespace bandlight

@@ -75,6 +75,11 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& options,
                   const std::string& path);
 
+/// What WriteLut wrote, read back as one transform through OCIO's own file
+/// readers: the companion shaper (if any), the LUT (tetrahedral), and the
+/// inverse shaper when the LUT's output is shaper-encoded.
+OCIO::GroupTransformRcPtr ReadLutFiles(const LutFiles& files);
+
 /// The same for a transform that exists only as a pixel function: always a
 /// lattice (CLF/CTF hold shaper + 3D LUT + inverse shaper).
 LutFiles WriteLut(const PixelFunction& exact, const LutOptions& options, const std::string& path);

@@ -68,6 +68,12 @@ Spectrum Spectrum::extended(double startNm, double endNm) const
     const double k1 = std::ceil((endNm - m_start) / m_step - 1e-9);
     const double lo = std::min(k0, 0.0);
     const double hi = std::max(k1, double(m_values.size() - 1));
+    if (!(hi - lo < 1e8))
+    {
+        throw Exception("extending a spectrum on a " + std::to_string(m_step) + " nm grid to " +
+                        std::to_string(startNm) + "–" + std::to_string(endNm) +
+                        " nm needs more than 1e8 samples");
+    }
     const size_t count = size_t(hi - lo) + 1;
     std::vector<double> v(count);
     for (size_t i = 0; i < count; ++i)

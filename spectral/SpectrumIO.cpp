@@ -103,6 +103,21 @@ bool LooksNumeric(const std::string& s)
     return end != s.c_str() && *end == '\0';
 }
 
+/// Refuses a grid that would need more than MAX_SPECTRUM_SAMPLES samples
+/// once it spans the visible range too (spectra are extended over 380–780 nm
+/// on their own step): a step of 1e-6 nm, or wavelengths of 1e16 nm.
+void CheckGrid(double first, double last, double step, const std::string& source, size_t line)
+{
+    const double span = std::max(last, 780.0) - std::min(first, 380.0);
+    if (!(step > 0.0) || !(span / step + 1.0 <= double(MAX_SPECTRUM_SAMPLES)))
+    {
+        Fail(source, line,
+             "a " + Nm(step) + " nm grid over " + Nm(first) + "–" + Nm(last) +
+                 " nm (and 380–780 nm) needs more than " + std::to_string(MAX_SPECTRUM_SAMPLES) +
+                 " samples");
+    }
+}
+
 /// Builds a regular-grid spectrum from increasing (wavelength, value)
 /// pairs; an irregular grid is resampled onto its smallest step, which must
 /// not need more than MAX_SPECTRUM_SAMPLES samples.
@@ -123,18 +138,12 @@ Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v
     if (maxStep - minStep <= 1e-6 * maxStep)
     {
         const double step = (wl.back() - wl.front()) / double(wl.size() - 1);
+        CheckGrid(wl.front(), wl.back(), step, source, lastLine);
         return Spectrum(wl.front(), step, v);
     }
-    const double samples = std::floor((wl.back() - wl.front()) / minStep + 1e-9) + 1.0;
-    if (!(samples <= double(MAX_SPECTRUM_SAMPLES)))
-    {
-        Fail(source, lastLine,
-             "irregular wavelengths: resampling " + std::to_string(wl.front()) + "–" +
-                 std::to_string(wl.back()) + " nm onto the smallest step (" +
-                 std::to_string(minStep) + " nm) needs more than " +
-                 std::to_string(MAX_SPECTRUM_SAMPLES) + " samples");
-    }
-    const size_t count = size_t(samples);
+    // Irregular: resampled onto the smallest step.
+    CheckGrid(wl.front(), wl.back(), minStep, source, lastLine);
+    const size_t count = size_t(std::floor((wl.back() - wl.front()) / minStep + 1e-9)) + 1;
     std::vector<double> out(count);
     size_t j = 0;
     for (size_t i = 0; i < count; ++i)
@@ -423,6 +432,7 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
                  std::to_string(sets) + " sets");
     }
     const double step = (end - start) / double(bands - 1);
+    CheckGrid(start, end, step, source, fields[specColumns.front()].line);
     std::vector<NamedSpectrum> out;
     for (size_t s = 0; s < sets; ++s)
     {

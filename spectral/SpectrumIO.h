@@ -10,8 +10,9 @@
 namespace bandlight
 {
 
-/// The most samples a spectrum read from a file may need (1 nm steps over
-/// 100 µm; an irregular grid is resampled onto its smallest step).
+/// The most samples a spectrum read from a file may need on its own grid,
+/// extended over 380–780 nm (an irregular grid is resampled onto its
+/// smallest step): 0.004 nm steps over the visible range, 1 nm over 100 µm.
 constexpr size_t MAX_SPECTRUM_SAMPLES = 100000;
 
 /// A spectrum read from a file, with the identifier the file gives it

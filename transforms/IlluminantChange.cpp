@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -71,41 +72,18 @@ MethodSpec ParseMethod(const std::string& name)
     const std::string n = Lower(name);
     MethodSpec m;
     m.name = n;
-    if (n == "none")
+    static const std::pair<const char*, ChangeMethod> kFixed[] = {
+        {"none", ChangeMethod::NONE},          {"vonkries", ChangeMethod::VON_KRIES},
+        {"bradford", ChangeMethod::BRADFORD},  {"cat02", ChangeMethod::CAT02},
+        {"fit3x3", ChangeMethod::FIT3X3},      {"prefilter", ChangeMethod::PREFILTER},
+        {"metamer", ChangeMethod::METAMER},    {"upsample", ChangeMethod::UPSAMPLE},
+        {"spectral", ChangeMethod::SPECTRAL},
+    };
+    const auto fixed = std::find_if(std::begin(kFixed), std::end(kFixed),
+                                    [&](const auto& f) { return n == f.first; });
+    if (fixed != std::end(kFixed))
     {
-        m.method = ChangeMethod::NONE;
-    }
-    else if (n == "vonkries")
-    {
-        m.method = ChangeMethod::VON_KRIES;
-    }
-    else if (n == "bradford")
-    {
-        m.method = ChangeMethod::BRADFORD;
-    }
-    else if (n == "cat02")
-    {
-        m.method = ChangeMethod::CAT02;
-    }
-    else if (n == "fit3x3")
-    {
-        m.method = ChangeMethod::FIT3X3;
-    }
-    else if (n == "prefilter")
-    {
-        m.method = ChangeMethod::PREFILTER;
-    }
-    else if (n == "metamer")
-    {
-        m.method = ChangeMethod::METAMER;
-    }
-    else if (n == "upsample")
-    {
-        m.method = ChangeMethod::UPSAMPLE;
-    }
-    else if (n == "spectral")
-    {
-        m.method = ChangeMethod::SPECTRAL;
+        m.method = fixed->second;
     }
     else if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
     {

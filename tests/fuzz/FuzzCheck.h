@@ -11,8 +11,11 @@
 #include <cstdlib>
 #include <string>
 
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 #include "spectral/SpectrumIO.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight::fuzz
 {
@@ -59,6 +62,45 @@ inline void CheckSpectra(const std::vector<NamedSpectrum>& spectra)
 inline std::string Text(const uint8_t* data, size_t size)
 {
     return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+/// One input through a spectrum reader, then through what `bandlight xyz`
+/// computes from its result: XYZ as an emission, as a remittance under D65,
+/// and band means (which may refuse a spectrum that misses a band, by name).
+template <typename Reader>
+int FuzzSpectrumReader(const uint8_t* data, size_t size, const std::string& source,
+                       Reader&& read)
+{
+    std::vector<NamedSpectrum> spectra;
+    try
+    {
+        spectra = read(Text(data, size), source);
+    }
+    catch (const Exception& e)
+    {
+        CheckMessage(e, source);
+        return 0;
+    }
+    CheckSpectra(spectra);
+    static const Spectrum d65 = BuiltinIlluminant("D65");
+    for (const NamedSpectrum& s : spectra)
+    {
+        const Vec3 e = IntegrateXyz(s.spectrum, Observer::CIE1931_2DEG);
+        const Vec3 r = SurfaceXyz(s.spectrum, d65, Observer::CIE1931_2DEG);
+        Check(e.allFinite() && r.allFinite(), "XYZ of a parsed spectrum is not finite");
+        try
+        {
+            for (double b : RemittanceBands(s.spectrum, BandSet::Lecture()))
+            {
+                Check(std::isfinite(b), "band mean of a parsed spectrum is not finite");
+            }
+        }
+        catch (const Exception& e)
+        {
+            CheckMessage(e, "band");
+        }
+    }
+    return 0;
 }
 
 }  // namespace bandlight::fuzz

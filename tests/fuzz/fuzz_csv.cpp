@@ -1,46 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzzes the CSV spectrum reader and what `bandlight xyz` computes from its
-// result: XYZ as an emission, as a remittance under D65, and band means.
-#include <sstream>
-
+// Fuzzes a spectrum file as bandlight reads one: the text checks (UTF-8,
+// byte-order marks), the choice of reader by content, the CSV reader.
 #include "FuzzCheck.h"
-#include "spectral/Colorimetry.h"
-#include "spectral/Illuminants.h"
-#include "transforms/BandModel.h"
-
-using namespace bandlight;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    const std::string source = "fuzz.csv";
-    std::vector<NamedSpectrum> spectra;
-    try
-    {
-        spectra = ReadSpectraText(fuzz::Text(data, size), source);
-    }
-    catch (const Exception& e)
-    {
-        fuzz::CheckMessage(e, source);
-        return 0;
-    }
-    fuzz::CheckSpectra(spectra);
-    static const Spectrum d65 = BuiltinIlluminant("D65");
-    for (const NamedSpectrum& s : spectra)
-    {
-        const Vec3 e = IntegrateXyz(s.spectrum, Observer::CIE1931_2DEG);
-        const Vec3 r = SurfaceXyz(s.spectrum, d65, Observer::CIE1931_2DEG);
-        fuzz::Check(e.allFinite() && r.allFinite(), "XYZ of a parsed spectrum is not finite");
-        try
-        {
-            for (double b : RemittanceBands(s.spectrum, BandSet::Lecture()))
-            {
-                fuzz::Check(std::isfinite(b), "band mean of a parsed spectrum is not finite");
-            }
-        }
-        catch (const Exception&)
-        {
-            // A spectrum that does not reach a band is refused by name.
-        }
-    }
-    return 0;
+    return bandlight::fuzz::FuzzSpectrumReader(data, size, "fuzz.csv", &bandlight::ReadSpectraText);
 }

@@ -153,23 +153,8 @@ TEST_CASE("cube, spi3d and 3dl load back through OCIO and match the lattice", "[
         const LutFiles files = WriteLut(exact, true, o, path);
         REQUIRE(files.lattice);
         REQUIRE_FALSE(files.shaper.empty());
-        // The companion shaper, then the LUT (then the inverse shaper for 3dl).
-        OCIO::GroupTransformRcPtr chain = OCIO::GroupTransform::Create();
-        OCIO::FileTransformRcPtr s = OCIO::FileTransform::Create();
-        s->setSrc(files.shaper.c_str());
-        chain->appendTransform(s);
-        OCIO::FileTransformRcPtr l = OCIO::FileTransform::Create();
-        l->setSrc(path.c_str());
-        l->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-        chain->appendTransform(l);
-        if (files.outputEncoded)
-        {
-            OCIO::FileTransformRcPtr inv = OCIO::FileTransform::Create();
-            inv->setSrc(files.shaper.c_str());
-            inv->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
-            chain->appendTransform(inv);
-        }
-        const auto loaded = Cpu(chain);
+        // The companion shaper, then the LUT, then the inverse shaper.
+        const auto loaded = Cpu(ReadLutFiles(files));
         double worst = 0.0;
         for (double x = 0.02; x <= 60000.0; x *= 1.5)
         {

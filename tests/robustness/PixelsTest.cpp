@@ -187,25 +187,7 @@ TEST_CASE("Every LUT format read back through OCIO: the shaper's clamp, never Na
         o.forceLattice = true;
         const std::string path = TempFile(std::string("hard.") + ext);
         const LutFiles files = WriteLut(exact, true, o, path);
-        OCIO::GroupTransformRcPtr chain = OCIO::GroupTransform::Create();
-        if (!files.shaper.empty())
-        {
-            OCIO::FileTransformRcPtr s = OCIO::FileTransform::Create();
-            s->setSrc(files.shaper.c_str());
-            chain->appendTransform(s);
-        }
-        OCIO::FileTransformRcPtr l = OCIO::FileTransform::Create();
-        l->setSrc(path.c_str());
-        l->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-        chain->appendTransform(l);
-        if (files.outputEncoded)
-        {
-            OCIO::FileTransformRcPtr inv = OCIO::FileTransform::Create();
-            inv->setSrc(files.shaper.c_str());
-            inv->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
-            chain->appendTransform(inv);
-        }
-        const auto cpu = Cpu(chain);
+        const auto cpu = Cpu(ReadLutFiles(files));
         for (const HardPixel& p : HardPixels())
         {
             INFO(ext << ": " << p.label);
