@@ -291,6 +291,9 @@ void CheckScene(const Scene& s)
     }
     for (const SceneLight& l : s.lights)
     {
+        // The band-mean normalisation every light gets (I_max = 1): a light
+        // with no power in any band is refused here, whatever the mode.
+        LightScale(l.spectrum, s.settings.bands);
         if (!std::isfinite(l.intensity) || l.intensity < 0.0)
         {
             throw Exception("a light's intensity must be finite and not negative");

@@ -219,3 +219,16 @@ TEST_CASE("Spectra that stop short of 380-780 nm: what is extrapolated is define
                                       "380–400 nm and 700–780 nm it is taken as zero") &&
                           Catch::Contains("its end values are held constant"));
 }
+
+TEST_CASE("A light with no power in the bands is refused by both render paths alike",
+          "[robustness][spectra]")
+{
+    // Lines at 820 nm and 59 µm: nothing in 400-700 nm, so no I_max to normalise by.
+    const Scene s = cli::ReadSceneText(
+        "render: {mode: spectral}\nlights:\n  - {type: point, spectrum: {lines: [[820, 1], "
+        "[59003, 1]]}}\n",
+        "ir.yaml");
+    const std::string expected = "light 'lines 820:1 59003:1' has no power in bands 400,500,600,700";
+    CHECK_THROWS_WITH(PlanScene(s), expected);
+    CHECK_THROWS_WITH(RenderSceneUnplanned(s, 1), expected);
+}
