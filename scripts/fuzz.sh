@@ -24,7 +24,7 @@ for t in "${targets[@]}"; do
   [[ -x $exe ]] || { echo "fuzz.sh: $exe not built (configure with -DBANDLIGHT_FUZZ=ON)" >&2; exit 2; }
   work="$build/fuzz-work/$t"
   mkdir -p "$work"
-  log="$work/fuzz.log"
+  log="$build/fuzz-work/$t.log"  # beside the corpus, not in it
   if ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
      "$exe" "$work" "tests/fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 \
             -rss_limit_mb=4096 -artifact_prefix="$work/" -print_final_stats=1 >"$log" 2>&1; then
