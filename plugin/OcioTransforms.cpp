@@ -54,7 +54,6 @@ OCIO::GroupTransformRcPtr Group(const Mat3& m, const std::string& name,
     md.addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
     g->appendTransform(InfinityGuard());
     g->appendTransform(MakeMatrixTransform(m));
-    g->appendTransform(InfinityGuard());
     return g;
 }
 }  // namespace

@@ -13,7 +13,7 @@ namespace bandlight
 {
 namespace OCIO = OCIO_NAMESPACE;
 
-/// The bound of the clamp that guards every matrix bandlight emits: finite
+/// The bound of the clamp in front of every matrix bandlight emits: finite
 /// values up to ±1e30 pass unchanged; ±Inf become ±1e30, so a matrix never
 /// computes Inf − Inf or 0 · Inf and never turns an infinite pixel into NaN.
 /// A NaN channel cannot pass an OpenColorIO clamp: OCIO maps it to the
@@ -24,9 +24,10 @@ constexpr double INFINITY_GUARD = PIXEL_GUARD;
 /// The guard alone: a RangeTransform clamping to ±INFINITY_GUARD.
 OCIO::RangeTransformRcPtr InfinityGuard();
 
-/// guard, matrix, guard: the form every emitted 3×3 takes (looks, named
-/// transforms, colour spaces, CLF files). The second guard makes the
-/// inverse direction safe too.
+/// guard, matrix, guard: the form of the 3×3s that are used in both
+/// directions (config colour spaces): each direction meets a guard first.
+/// The relight, band and tint transforms are guard, matrix: they run
+/// forward, and one clamp less is a third faster (bench_apply).
 OCIO::GroupTransformRcPtr GuardedMatrixTransform(const Mat3& m);
 
 

@@ -365,9 +365,8 @@ Vec3 GuardPixel(const Vec3& rgb) noexcept
 Vec3 Relighter::apply(const Vec3& rgb) const
 {
     const Vec3 in = GuardPixel(rgb);
-    const Vec3 out = m_linear ? Vec3(m_matrix * in)
-                              : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
-    return GuardPixel(out);
+    return m_linear ? Vec3(m_matrix * in)
+                    : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
 }
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
@@ -380,10 +379,9 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
         {
             float* p = rgb + 3 * i;
             const Vec3 in = GuardPixel(Vec3(p[0], p[1], p[2]));
-            const Vec3 out = GuardPixel(m_linear ? Vec3(m_matrix * in)
-                                                 : UpsampleRelight(m_spectral->upsampler,
-                                                                   m_spectral->to, m_matrix, in,
-                                                                   &warm, &cache));
+            const Vec3 out = m_linear ? Vec3(m_matrix * in)
+                                      : UpsampleRelight(m_spectral->upsampler, m_spectral->to,
+                                                        m_matrix, in, &warm, &cache);
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());

@@ -91,11 +91,12 @@ struct Light
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
                             const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
 
-/// The bound every pixel path clamps to: ±Inf become ±1e30 and NaN −1e30
-/// before a matrix (so no matrix computes Inf − Inf), and results are
-/// clamped to ±1e30. The OCIO transforms do the same with RangeTransforms
-/// (OCIO's clamp sends NaN to its lower bound); finite pixels below the
-/// bound pass unchanged. docs/robustness.md tabulates the cases.
+/// The bound every pixel path clamps its input to: ±Inf become ±1e30 and
+/// NaN −1e30 before a matrix, so no matrix computes Inf − Inf and every
+/// result is finite (at most ‖M‖·1e30). The OCIO transforms do the same
+/// with a RangeTransform (OCIO's clamp sends NaN to its lower bound); finite
+/// pixels below the bound pass unchanged. docs/robustness.md tabulates the
+/// cases.
 constexpr double PIXEL_GUARD = 1e30;
 
 /// A pixel as the guard sees it: each channel clamped to ±PIXEL_GUARD, NaN

@@ -79,7 +79,7 @@ const Light& D65()
 
 }  // namespace
 
-TEST_CASE("Every linear method: guard, exact 3x3, guard; no NaN from Inf or finite input",
+TEST_CASE("Every linear method: guard, then the exact 3x3; no NaN from Inf or finite input",
           "[robustness][pixels]")
 {
     const RgbSpace& working = FindRgbSpace("acescg");
@@ -96,7 +96,7 @@ TEST_CASE("Every linear method: guard, exact 3x3, guard; no NaN from Inf or fini
         {
             INFO(name << ": " << p.label);
             const Vec3 in(Guard(p.rgb[0]), Guard(p.rgb[1]), Guard(p.rgb[2]));
-            const Vec3 expected = (m * in).cwiseMax(-INFINITY_GUARD).cwiseMin(INFINITY_GUARD);
+            const Vec3 expected = m * in;
             const Vec3 out = Run(cpu, p.rgb);
             INFO("out " << out.transpose() << " expected " << expected.transpose());
             CHECK(out.allFinite());
