@@ -30,13 +30,12 @@ OCIO::RangeTransformRcPtr InfinityGuard();
 /// forward, and one clamp less is a third faster (bench_apply).
 OCIO::GroupTransformRcPtr GuardedMatrixTransform(const Mat3& m);
 
-
 /// A MatrixTransform holding a 3×3 (as OCIO's 4×4 with no offset).
 OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m);
 
 /// The illuminant change from `from` to `to` by `method`, for images in the
 /// linear RGB space `working`, with the method's description as metadata: a
-/// group holding one MatrixTransform for the linear methods; for upsample,
+/// group holding the guard and one MatrixTransform for the linear methods; for upsample,
 /// the log2 shaper, a `lutSize`³ 3D LUT baked from the per-pixel spectral
 /// fit, and the inverse shaper. Throws Exception for `spectral`.
 OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
