@@ -35,9 +35,10 @@ OCIO::MatrixTransformRcPtr MakeMatrixTransform(const Mat3& m);
 
 /// The illuminant change from `from` to `to` by `method`, for images in the
 /// linear RGB space `working`, with the method's description as metadata: a
-/// group holding the guard and one MatrixTransform for the linear methods; for upsample,
-/// the log2 shaper, a `lutSize`³ 3D LUT baked from the per-pixel spectral
-/// fit, and the inverse shaper. Throws Exception for `spectral`.
+/// group holding the guard and one MatrixTransform for the linear methods;
+/// for upsample, the log2 shaper, a `lutSize`³ 3D LUT baked from the
+/// per-pixel spectral fit, and the inverse shaper. Throws Exception for
+/// `spectral`.
 OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Light& to,
                                                     const MethodSpec& method,
                                                     const RgbSpace& working,
