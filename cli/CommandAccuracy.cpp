@@ -14,6 +14,7 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Cost.h"
+#include "cli/Diagnostics.h"
 #include "cli/Gnuplot.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
@@ -80,7 +81,7 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
 
 void Plot(const std::string& path, const std::vector<std::string>& methods,
           const std::map<std::string, double>& error, const std::map<std::string, double>& cost,
-          const std::string& setName)
+          const std::string& setName, OutputSet& outputs)
 {
     // One point per method (ns/pixel, mean ΔE00), the Pareto front joined:
     // the methods no other method beats in both error and cost.
@@ -109,7 +110,7 @@ void Plot(const std::string& path, const std::vector<std::string>& methods,
         {
             rank += pts[k].ns == pts[i].ns ? 1 : 0;
         }
-        data << pts[i].ns << " " << pts[i].de << " \"" << pts[i].name << "\" "
+        data << pts[i].ns << " " << pts[i].de << " " << GnuplotDataLabel(pts[i].name) << " "
              << (rank % 2 ? -1 : 1) << "\n";
     }
     data << "\n\n";
@@ -122,20 +123,25 @@ void Plot(const std::string& path, const std::vector<std::string>& methods,
             data << p.ns << " " << p.de << "\n";
         }
     }
-    const std::string script =
-        "set title 'What accuracy costs: re-lighting " + setName +
-        ", mean over every illuminant pair'\n"
-        "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
-        "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
-        "set logscale x\nset grid\nset key top right\nset yrange [0:*]\n"
-        "set offsets graph 0.1, graph 0.1, graph 0.08, 0\n"
-        "plot $DATA index 1 using 1:2 with lines lw 2 lc rgb '#2a7ab0' title 'Pareto front', \\\n"
-        "     $DATA index 0 using 1:2 with points pt 7 ps 1.4 lc rgb '#c0392b' notitle, \\\n"
-        "     $DATA index 0 using 1:($4 > 0 ? $2 : 1/0):3 with labels left offset char 1,0 "
-        "font ',10' notitle, \\\n"
-        "     $DATA index 0 using 1:($4 < 0 ? $2 : 1/0):3 with labels right offset char -1,0 "
-        "font ',10' notitle\n";
-    RunGnuplot(script, data.str(), path);
+    const std::string script = "set title " +
+                               GnuplotQuote("What accuracy costs: re-lighting " + setName +
+                                            ", mean over every illuminant pair") +
+                               "\n"
+                               "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
+                               "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
+                               "set logscale x\nset grid\nset key top right\nset yrange [0:*]\n"
+                               "set offsets graph 0.1, graph 0.1, graph 0.08, 0\n"
+                               "plot $bandlight_data index 1 using 1:2 with lines lw 2 lc rgb "
+                               "'#2a7ab0' title 'Pareto front', \\\n"
+                               "     $bandlight_data index 0 using 1:2 with points pt 7 ps 1.4 lc "
+                               "rgb '#c0392b' notitle, \\\n"
+                               "     $bandlight_data index 0 using 1:($4 > 0 ? $2 : 1/0):3 with "
+                               "labels left offset char 1,0 "
+                               "font ',10' notitle, \\\n"
+                               "     $bandlight_data index 0 using 1:($4 < 0 ? $2 : 1/0):3 with "
+                               "labels right offset char -1,0 "
+                               "font ',10' notitle\n";
+    RunGnuplot(script, data.str(), path, &outputs);
 }
 
 void RunAccuracy(const AccuracyCommandOptions& o)
@@ -171,8 +177,9 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     }
 
     const size_t pairs = options.lights.size() * (options.lights.size() - 1);
-    std::cerr << "accuracy: " << options.methods.size() << " methods x " << pairs
-              << " illuminant pairs x " << options.sets.size() << " reflectance sets\n";
+    Progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
+             std::to_string(pairs) + " illuminant pairs x " + std::to_string(options.sets.size()) +
+             " reflectance sets");
     std::mutex mu;
     int lastTenth = -1;
     const std::vector<AccuracyRow> rows = MeasureAccuracy(
@@ -184,7 +191,7 @@ void RunAccuracy(const AccuracyCommandOptions& o)
             if (tenth != lastTenth)
             {
                 lastTenth = tenth;
-                std::cerr << "accuracy: " << int(f * 100.0 + 0.5) << "% of pairs done\n";
+                Progress("accuracy: " + std::to_string(int(f * 100.0 + 0.5)) + "% of pairs done");
             }
         });
 
@@ -192,7 +199,7 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     std::vector<SetupCost> setup;
     if (!o.noCost)
     {
-        std::cerr << "accuracy: timing each method on 1920x1080 float RGBA\n";
+        Progress("accuracy: timing each method on 1920x1080 float RGBA");
         cost = MeasureCost(options.methods, options.workingSpace, 1920L * 1080L);
         setup = MeasureSetupCost(options.workingSpace);
     }
@@ -270,6 +277,9 @@ void RunAccuracy(const AccuracyCommandOptions& o)
         }
     }
 
+    // The JSON file and the plot are one set of outputs.
+    OutputSet outputs;
+    std::string wrote;
     if (!o.json.empty())
     {
         nlohmann::ordered_json j;
@@ -305,8 +315,8 @@ void RunAccuracy(const AccuracyCommandOptions& o)
         }
         else
         {
-            WriteFileAtomically(o.json, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
-            std::cerr << "accuracy: wrote " << o.json << "\n";
+            outputs.write(o.json, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
+            wrote += "accuracy: wrote " + o.json + "\n";
         }
     }
     if (!o.plot.empty())
@@ -315,9 +325,11 @@ void RunAccuracy(const AccuracyCommandOptions& o)
         {
             throw Exception("--plot needs the cost measurement (drop --no-cost)");
         }
-        Plot(o.plot, options.methods, plotError, costAll, heldOut);
-        std::cerr << "accuracy: wrote " << o.plot << "\n";
+        Plot(o.plot, options.methods, plotError, costAll, heldOut, outputs);
+        wrote += "accuracy: wrote " + o.plot + "\n";
     }
+    outputs.commit();
+    std::cerr << wrote;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "cli/Common.h"
 #include "cli/ImageApply.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::cli
 {
@@ -111,7 +112,9 @@ void AddApplyCommand(CLI::App& app)
                     "Colour space of the image in the config (default: its scene_linear role)");
     AddRelightOptions(*cmd, o->relight, false);
     cmd->add_option("--frames", o->frames, "Frame range for patterns, e.g. 1001-1100");
-    cmd->add_option("--threads", o->threads, "Threads (0: all cores)")->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads (0: all cores; at most 256)")
+        ->check(CLI::Range(0, kMaxThreads))
+        ->capture_default_str();
     cmd->callback([o] { RunApply(*o); });
 }
 

@@ -25,6 +25,13 @@ void RunCri(const CriOptions& o)
 {
     const NamedSpectrum illuminant = ResolveIlluminant(o.illuminant);
     const ColourRendering cr = ComputeColourRendering(illuminant.spectrum);
+    RequireFinite(cr.cctK, "CCT");
+    RequireFinite(cr.duv, "Duv");
+    RequireFinite(cr.ra, "Ra");
+    for (size_t i = 0; i < cr.r.size(); ++i)
+    {
+        RequireFinite(cr.r[i], "R" + std::to_string(i + 1));
+    }
     if (o.json)
     {
         nlohmann::ordered_json j;

@@ -5,6 +5,7 @@
 // spectral truth under D65 to compare with.
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include <Eigen/LU>
 
@@ -82,7 +83,10 @@ void RunPackage(const std::string& dir)
     options.lights = LectureLights();
     options.methods = LinearMethodNames();
     const ConfigPackage package = BuildConfig(options);
-    WriteConfigPackage(package, dir);
+    // The config, its LUTs and every image are one set: a failing run
+    // leaves the previous package as it was.
+    OutputSet files;
+    WriteConfigPackage(package, dir, &files);
     const OCIO::ConstConfigRcPtr config = package.config;
     const RgbSpace& working = FindRgbSpace(options.workingSpace);
     const std::string workingName = ColorSpaceName(working);
@@ -112,20 +116,25 @@ void RunPackage(const std::string& dir)
                       0);
         outputs.push_back({"chart_" + look, std::move(px)});
     }
-    std::cout << "Wrote " << dir << "/config.ocio: " << config->getNumLooks() << " looks ("
-              << options.lights.size() << " illuminants, " << options.methods.size()
-              << " methods), working space " << workingName << "\n";
+    std::ostringstream report;
+    report << "Wrote " << dir << "/config.ocio: " << config->getNumLooks() << " looks ("
+           << options.lights.size() << " illuminants, " << options.methods.size()
+           << " methods), working space " << workingName << "\n";
+    ImageDescription srgb;
+    srgb.colorSpace = "sRGB";
     for (const Output& o : outputs)
     {
         WriteImage(dir + "/" + o.name + ".exr", o.pixels.data(), w, h, 4, {"R", "G", "B", "A"},
-                   workingName, PixelType::HALF);
+                   LinearImageDescription(working, workingName), PixelType::HALF, &files);
         std::vector<float> preview = o.pixels;
         ApplyToBuffer(toSrgb, preview.data(), w, h, 4, rgb, 0);
-        WriteImage(dir + "/" + o.name + ".png", preview.data(), w, h, 4, {"R", "G", "B", "A"},
-                   "sRGB", PixelType::UINT8);
-        std::cout << "Wrote " << dir << "/" << o.name << ".exr (" << workingName
-                  << ") and .png (sRGB preview)\n";
+        WriteImage(dir + "/" + o.name + ".png", preview.data(), w, h, 4, {"R", "G", "B", "A"}, srgb,
+                   PixelType::UINT8, &files);
+        report << "Wrote " << dir << "/" << o.name << ".exr (" << workingName
+               << ") and .png (sRGB preview)\n";
     }
+    files.commit();
+    std::cout << report.str();
     std::cout << "The TCS01-TCS15 chart rendered spectrally under A, re-lit to D65 by the band3 "
                  "and bradford looks, and the spectral truth under D65 to compare with.\n";
 }

@@ -78,13 +78,15 @@ void RunPlot(const PlotOptions& o)
                         curves[0].spectrum.end() + curves[0].spectrum.step(), curves[0].name);
 
     std::ostringstream data, plot;
-    plot << "set title '" << title << "'\nset xlabel 'wavelength (nm)'\nset ylabel '" << ylabel
-         << "'\nset grid\nset key top right\nset xrange [360:830]\n";
+    // Names and titles come from files and file names: quoted so gnuplot
+    // shows them and never evaluates them.
+    plot << "set title " << GnuplotQuote(title) << "\nset xlabel 'wavelength (nm)'\nset ylabel "
+         << GnuplotQuote(ylabel) << "\nset grid\nset key top right\nset xrange [360:830]\n";
     for (const Band& b : bands)
     {
         plot << "set arrow from " << b.minNm << ", graph 0 to " << b.minNm
              << ", graph 1 nohead dt 3 lc rgb '#888888'\n";
-        plot << "set label '" << b.name << "' at " << 0.5 * (b.minNm + b.maxNm)
+        plot << "set label " << GnuplotQuote(b.name) << " at " << 0.5 * (b.minNm + b.maxNm)
              << ", graph 0.97 center\n";
     }
     plot << "set arrow from " << bands.bands().back().maxNm << ", graph 0 to "
@@ -108,11 +110,11 @@ void RunPlot(const PlotOptions& o)
         }
         data << "\n";
         const char* colour = colours[c % 6];
-        plot << (c ? ", \\\n     " : "") << "$DATA index " << index
-             << " using 1:2 with lines lw 2 lc rgb '" << colour << "' title '" << cv.name
-             << "', \\\n     $DATA index " << index + 1
-             << " using 1:2 with lines lw 3 dt 2 lc rgb '" << colour << "' title '" << cv.name
-             << " band means'";
+        plot << (c ? ", \\\n     " : "") << "$bandlight_data index " << index
+             << " using 1:2 with lines lw 2 lc rgb '" << colour << "' title "
+             << GnuplotQuote(cv.name) << ", \\\n     $bandlight_data index " << index + 1
+             << " using 1:2 with lines lw 3 dt 2 lc rgb '" << colour << "' title "
+             << GnuplotQuote(cv.name + " band means");
         index += 2;
     }
     plot << "\n";

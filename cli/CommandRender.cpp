@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include <Eigen/LU>
 
@@ -12,8 +13,11 @@
 #include "cli/Common.h"
 #include "cli/ImageApply.h"
 #include "cli/SceneFile.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 #include "transforms/Accuracy.h"
 #include "transforms/SceneRenderer.h"
 
@@ -75,20 +79,37 @@ std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working
     return px;
 }
 
-void Write(const RenderedImage& img, const std::string& out, const std::string& space)
+/// Adds the render (and its sRGB preview) to `outputs`; returns what to
+/// report once the set is written.
+std::string Write(const RenderedImage& img, const std::string& out, const std::string& space,
+                  const BandSet& bands, OutputSet& outputs)
 {
-    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, space,
-               PixelType::FLOAT);
-    std::cout << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
-              << " channels, " << space << ")\n";
-    if (space != "bands")
+    std::ostringstream report;
+    if (space == "bands")
     {
-        const std::string png = Stem(out) + ".png";
-        const std::vector<float> preview = SrgbPreview(img, FindRgbSpace(space));
-        WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, "sRGB",
-                   PixelType::UINT8);
-        std::cout << "Wrote " << png << " (sRGB preview)\n";
+        ImageDescription d;
+        d.colorSpace = "bands";
+        d.attributes.push_back(
+            {"bandlight:channels", "band values (radiometric), not RGB: " + bands.describe()});
+        WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
+                   PixelType::FLOAT, &outputs);
+        report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
+               << " band channels)\n";
+        return report.str();
     }
+    const RgbSpace& rgb = FindRgbSpace(space);
+    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
+               LinearImageDescription(rgb, ColorSpaceName(rgb)), PixelType::FLOAT, &outputs);
+    report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
+           << " channels, " << ColorSpaceName(rgb) << ")\n";
+    const std::string png = Stem(out) + ".png";
+    const std::vector<float> preview = SrgbPreview(img, rgb);
+    ImageDescription srgb;
+    srgb.colorSpace = "sRGB";
+    WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, srgb,
+               PixelType::UINT8, &outputs);
+    report << "Wrote " << png << " (sRGB preview)\n";
+    return report.str();
 }
 
 void RunRender(const RenderOptions& o)
@@ -127,10 +148,14 @@ void RunRender(const RenderOptions& o)
               << Fixed(seconds * 1e3, 1) << " ms: " << counters.lightTerms << " light terms, "
               << counters.specularTerms << " specular, " << counters.attenuationTerms
               << " attenuation, " << counters.spectralSamples << " per-pixel spectral samples\n";
-    Write(img, out, scene.settings.output);
+    // The render, its preview and (with --compare) the heat maps are one set.
+    OutputSet outputs;
+    std::string report = Write(img, out, scene.settings.output, scene.settings.bands, outputs);
 
     if (!o.compare)
     {
+        outputs.commit();
+        std::cout << report;
         return;
     }
     if (scene.settings.output == "bands")
@@ -170,16 +195,20 @@ void RunRender(const RenderOptions& o)
         de.push_back(e);
     }
     const std::string heatPath = Stem(out) + "_dE00.exr";
-    WriteImage(heatPath, heat.pixels.data(), heat.width, heat.height, 1, heat.channelNames, "data",
-               PixelType::FLOAT);
+    ImageDescription data;
+    data.colorSpace = "data";
+    WriteImage(heatPath, heat.pixels.data(), heat.width, heat.height, 1, heat.channelNames, data,
+               PixelType::FLOAT, &outputs);
     // A viewable heat map: 0 → black, 10 ΔE00 or more → white.
     std::vector<float> grey(heat.pixels.size());
     for (size_t i = 0; i < grey.size(); ++i)
     {
         grey[i] = std::min(1.0f, heat.pixels[i] / 10.0f);
     }
-    WriteImage(Stem(out) + "_dE00.png", grey.data(), heat.width, heat.height, 1, {"Y"}, "data",
-               PixelType::UINT8);
+    WriteImage(Stem(out) + "_dE00.png", grey.data(), heat.width, heat.height, 1, {"Y"}, data,
+               PixelType::UINT8, &outputs);
+    outputs.commit();
+    std::cout << report;
     double sum = 0.0;
     for (double e : de)
     {
@@ -206,7 +235,9 @@ void AddRenderCommand(CLI::App& app)
                   "Also render the spectral reference; write a ΔE00 heat map and a summary");
     cmd->add_flag("--unplanned", o->unplanned,
                   "Evaluate every term per pixel and sample (the reference for the planner)");
-    cmd->add_option("--threads", o->threads, "Threads (0: all cores)")->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads (0: all cores; at most 256)")
+        ->check(CLI::Range(0, kMaxThreads))
+        ->capture_default_str();
     cmd->callback([o] { RunRender(*o); });
 }
 

@@ -8,6 +8,7 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::cli
 {
@@ -48,6 +49,15 @@ void RunXyz(const XyzOptions& o)
         }
     }
 
+    for (const Row& r : rows)
+    {
+        const Vec3 lab = XyzToLab(r.xyz, white);
+        for (int c = 0; c < 3; ++c)
+        {
+            RequireFinite(r.xyz[c], "XYZ of '" + OneLine(r.id, 80) + "'");
+            RequireFinite(lab[c], "L*a*b* of '" + OneLine(r.id, 80) + "'");
+        }
+    }
     if (o.json)
     {
         nlohmann::ordered_json j;

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <regex>
 #include <sstream>
 
+#include "cli/Diagnostics.h"
+#include "plugin/ConfigReferences.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
@@ -42,9 +44,10 @@ NamedSpectrum ResolveIlluminant(const std::string& nameOrFile)
         return {nameOrFile, BuiltinIlluminant(nameOrFile)};  // throws, listing the choices
     }
     NamedSpectrum s = ReadSpectraFile(nameOrFile).front();
+    s.spectrum = UsableIlluminant(s.spectrum, nameOrFile);
     if (const std::string note = CoverageNote(s, nameOrFile, false); !note.empty())
     {
-        std::cerr << "note: " << note << "\n";
+        Note(note);
     }
     return s;
 }
@@ -71,23 +74,54 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile)
     std::vector<NamedSpectrum> spectra = ReadSpectraFile(nameOrFile);
     for (const NamedSpectrum& s : spectra)
     {
+        CheckRemittanceMagnitude(s, nameOrFile);
         for (const std::string& note :
              {CoverageNote(s, nameOrFile, true), RemittanceRangeNote(s, nameOrFile)})
         {
             if (!note.empty())
             {
-                std::cerr << "note: " << note << "\n";
+                Note(note);
             }
         }
     }
     return spectra;
 }
 
+namespace
+{
+/// The line number after the first "line " or "Line " in an OCIO message
+/// (0 if none or implausible). Scanned by hand: messages quote file names
+/// of any length, which a recursive regex matcher cannot take.
+size_t LineInMessage(const std::string& what)
+{
+    for (size_t at = what.find("ine "); at != std::string::npos; at = what.find("ine ", at + 1))
+    {
+        if (at == 0 || (what[at - 1] != 'l' && what[at - 1] != 'L'))
+        {
+            continue;
+        }
+        size_t i = at + 4, line = 0, digits = 0;
+        for (; i < what.size() && std::isdigit(static_cast<unsigned char>(what[i])); ++i, ++digits)
+        {
+            line = digits < 9 ? line * 10 + size_t(what[i] - '0') : line;
+        }
+        if (digits > 0)
+        {
+            return digits <= 9 ? line : 0;
+        }
+    }
+    return 0;
+}
+}  // namespace
+
 OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file)
 {
     try
     {
-        return OCIO_NAMESPACE::Config::CreateFromFile(file.c_str());
+        OCIO_NAMESPACE::ConstConfigRcPtr config =
+            OCIO_NAMESPACE::Config::CreateFromFile(file.c_str());
+        CheckConfigReferences(config, file);
+        return config;
     }
     catch (const OCIO_NAMESPACE::Exception& e)
     {
@@ -100,12 +134,7 @@ OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file)
         {
             what = what.substr(at + failed.size());
         }
-        std::smatch m;
-        size_t line = 0;
-        if (std::regex_search(what, m, std::regex("[Ll]ine ([0-9]+)")))
-        {
-            line = size_t(std::stoul(m[1].str()));
-        }
+        const size_t line = LineInMessage(what);
         for (char& c : what)
         {
             c = c == '\n' ? ' ' : c;
@@ -167,6 +196,14 @@ std::vector<std::string> SplitList(const std::string& text)
         }
     }
     return out;
+}
+
+void RequireFinite(double value, const std::string& what)
+{
+    if (!std::isfinite(value))
+    {
+        throw Exception(what + " is not a finite number (the input is out of range)");
+    }
 }
 
 std::string Fixed(double v, int decimals)

@@ -48,6 +48,11 @@ OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file);
 
 std::vector<std::string> SplitList(const std::string& text);
 
+/// Throws Exception when a value about to be printed is not finite: a
+/// command never reports NaN, Inf or JSON null with exit code 0. `what`
+/// says which result it is.
+void RequireFinite(double value, const std::string& what);
+
 /// Formats a double with `decimals` places for tables.
 std::string Fixed(double v, int decimals);
 

@@ -5,13 +5,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
-#include <regex>
 #include <thread>
 
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::cli
 {
@@ -19,16 +20,12 @@ namespace bandlight::cli
 void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long width, long height,
                    int channels, const int rgb[3], int threads)
 {
-    if (threads <= 0)
-    {
-        threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    }
-    threads = int(std::min<long>(threads, std::max<long>(1, height)));
     const bool packed = rgb[0] == 0 && rgb[1] == 1 && rgb[2] == 2 && channels >= 3;
     const ptrdiff_t xStride = ptrdiff_t(channels) * ptrdiff_t(sizeof(float));
     const ptrdiff_t yStride = xStride * width;
-    auto run = [&](long y0, long y1)
+    auto run = [&](size_t r0, size_t r1)
     {
+        const long y0 = long(r0), y1 = long(r1);
         float* base = pixels + size_t(y0) * size_t(width) * size_t(channels);
         if (packed)
         {
@@ -46,26 +43,7 @@ void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long 
             cpu->apply(desc);
         }
     };
-    if (threads == 1)
-    {
-        run(0, height);
-        return;
-    }
-    std::vector<std::thread> pool;
-    const long rows = (height + threads - 1) / threads;
-    for (int t = 0; t < threads; ++t)
-    {
-        const long y0 = rows * t;
-        const long y1 = std::min(height, y0 + rows);
-        if (y0 < y1)
-        {
-            pool.emplace_back(run, y0, y1);
-        }
-    }
-    for (std::thread& th : pool)
-    {
-        th.join();
-    }
+    ParallelFor(size_t(std::max(height, 0L)), threads, run);
 }
 
 void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
@@ -83,15 +61,32 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
 }
 
 void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
-                const std::vector<std::string>& channelNames, const std::string& colorSpace,
-                PixelType type)
+                const std::vector<std::string>& channelNames, ImageDescription description,
+                PixelType type, OutputSet* outputs)
 {
+    const ImageFilesApi& api = ImageFiles();
+    if (outputs)
+    {
+        AtomicFile& file = outputs->add(path);
+        file.stream().close();  // the module writes by name
+        description.writeAs = file.tempPath();
+    }
     const std::string error =
-        ImageFiles().write(path, pixels, width, height, channels, channelNames, colorSpace, type);
+        api.write(path, pixels, width, height, channels, channelNames, description, type);
     if (!error.empty())
     {
         throw Exception(error);
     }
+}
+
+ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name)
+{
+    ImageDescription d;
+    d.colorSpace = name;
+    const Chromaticities& c = space.chromaticities;
+    d.chromaticities = {float(c.rx), float(c.ry), float(c.gx), float(c.gy),
+                        float(c.bx), float(c.by), float(c.wx), float(c.wy)};
+    return d;
 }
 
 const ImageFilesApi& ImageFiles()
@@ -136,10 +131,81 @@ const ImageFilesApi& ImageFiles()
     return *api;
 }
 
+namespace
+{
+/// A printf-style frame field "%d", "%4d" or "%04d" in a pattern: where it
+/// starts, how long it is and its width. Scanned by hand (no regex: a
+/// recursive matcher overflows the stack on long names).
+struct PrintfField
+{
+    size_t pos = std::string::npos;
+    size_t length = 0;
+    int width = 1;
+};
+
+PrintfField FindPrintfField(const std::string& pattern)
+{
+    for (size_t i = pattern.find('%'); i != std::string::npos; i = pattern.find('%', i + 1))
+    {
+        size_t j = i + 1;
+        while (j < pattern.size() && pattern[j] >= '0' && pattern[j] <= '9')
+        {
+            ++j;
+        }
+        if (j < pattern.size() && pattern[j] == 'd')
+        {
+            PrintfField f{i, j + 1 - i, 1};
+            const std::string digits = pattern.substr(i + 1, j - i - 1);
+            const size_t first = digits.find_first_not_of('0');
+            const std::string value = first == std::string::npos ? "" : digits.substr(first);
+            if (value.size() > 2 || (!value.empty() && std::stoi(value) > kMaxFrameWidth))
+            {
+                throw Exception("frame pattern '" + OneLine(pattern, 80) +
+                                "': the frame number's width is at most " +
+                                std::to_string(kMaxFrameWidth) + " digits");
+            }
+            f.width = value.empty() ? 1 : std::stoi(value);
+            return f;
+        }
+    }
+    return {};
+}
+
+/// Parses an optionally signed decimal integer of at most 9 digits at
+/// text[i...], skipping spaces before it; advances i. False when absent.
+bool ParseFrameNumber(const std::string& text, size_t& i, long& value)
+{
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    {
+        ++i;
+    }
+    const bool negative = i < text.size() && text[i] == '-';
+    size_t j = i + (negative ? 1 : 0);
+    const size_t digitsStart = j;
+    value = 0;
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9')
+    {
+        if (j - digitsStart >= 9)
+        {
+            return false;
+        }
+        value = value * 10 + (text[j] - '0');
+        ++j;
+    }
+    if (j == digitsStart)
+    {
+        return false;
+    }
+    value = negative ? -value : value;
+    i = j;
+    return true;
+}
+}  // namespace
+
 bool HasFramePattern(const std::string& pattern)
 {
     return pattern.find('#') != std::string::npos ||
-           std::regex_search(pattern, std::regex("%0?[0-9]*d"));
+           FindPrintfField(pattern).pos != std::string::npos;
 }
 
 std::string ExpandFramePattern(const std::string& pattern, int frame)
@@ -152,39 +218,66 @@ std::string ExpandFramePattern(const std::string& pattern, int frame)
         {
             ++end;
         }
+        if (end - hash > size_t(kMaxFrameWidth))
+        {
+            throw Exception("frame pattern '" + OneLine(pattern, 80) +
+                            "': the frame number's width is at most " +
+                            std::to_string(kMaxFrameWidth) + " digits");
+        }
         char buf[32];
         std::snprintf(buf, sizeof buf, "%0*d", int(end - hash), frame);
         return pattern.substr(0, hash) + buf + pattern.substr(end);
     }
-    std::smatch m;
-    if (std::regex_search(pattern, m, std::regex("%0?([0-9]*)d")))
+    const PrintfField f = FindPrintfField(pattern);
+    if (f.pos != std::string::npos)
     {
-        const int width = m[1].str().empty() ? 1 : std::stoi(m[1].str());
         char buf[32];
-        std::snprintf(buf, sizeof buf, "%0*d", width, frame);
-        return m.prefix().str() + buf + m.suffix().str();
+        std::snprintf(buf, sizeof buf, "%0*d", f.width, frame);
+        return pattern.substr(0, f.pos) + buf + pattern.substr(f.pos + f.length);
     }
     return pattern;
 }
 
 std::vector<int> ParseFrameRange(const std::string& text)
 {
-    std::smatch m;
-    if (!std::regex_match(text, m,
-                          std::regex("\\s*(-?[0-9]{1,9})\\s*(?:-\\s*(-?[0-9]{1,9}))?\\s*")))
+    const std::string shown = OneLine(text, 80);
+    size_t i = 0;
+    long first = 0, last = 0;
+    bool ok = ParseFrameNumber(text, i, first);
+    last = first;
+    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
     {
-        throw Exception("frame range '" + text + "': expected FIRST-LAST, e.g. 1001-1100");
+        ++i;
     }
-    const int first = std::stoi(m[1].str());
-    const int last = m[2].matched ? std::stoi(m[2].str()) : first;
+    if (ok && i < text.size() && text[i] == '-')
+    {
+        ++i;
+        ok = ParseFrameNumber(text, i, last);
+    }
+    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    {
+        ++i;
+    }
+    if (!ok || i != text.size())
+    {
+        throw Exception("frame range '" + shown +
+                        "': expected FIRST-LAST, e.g. 1001-1100 (frame numbers of at most 9 "
+                        "digits)");
+    }
     if (last < first)
     {
-        throw Exception("frame range '" + text + "': the last frame comes before the first");
+        throw Exception("frame range '" + shown + "': the last frame comes before the first");
+    }
+    if (last - first + 1 > kMaxFramesPerCall)
+    {
+        throw Exception("frame range '" + shown + "': " + std::to_string(last - first + 1) +
+                        " frames; at most " + std::to_string(kMaxFramesPerCall) +
+                        " per call (split the range)");
     }
     std::vector<int> frames;
-    for (int f = first; f <= last; ++f)
+    for (long f = first; f <= last; ++f)
     {
-        frames.push_back(f);
+        frames.push_back(int(f));
     }
     return frames;
 }

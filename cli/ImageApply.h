@@ -7,6 +7,8 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "cli/ImageFiles.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -29,18 +31,29 @@ void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long 
                    int channels, const int rgb[3], int threads);
 
 /// Writes interleaved float pixels through OIIO, atomically, stored as
-/// `type`, with channel names and an oiio:ColorSpace attribute. Throws
-/// Exception naming the file on failure.
+/// `type`, with channel names, the colour space (and chromaticities, when
+/// given) in `description`. With `outputs`, the image joins that set of
+/// outputs (the caller commits it). Throws Exception naming the file.
 void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
-                const std::vector<std::string>& channelNames, const std::string& colorSpace,
-                PixelType type);
+                const std::vector<std::string>& channelNames, ImageDescription description,
+                PixelType type, OutputSet* outputs = nullptr);
+
+/// The description of linear pixels in `space`: the colour space's name
+/// as the config calls it (`name`) and the space's chromaticities.
+ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name);
 
 /// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
 /// gives "plate.1001.exr"; a name without a pattern is returned unchanged.
 std::string ExpandFramePattern(const std::string& pattern, int frame);
 bool HasFramePattern(const std::string& pattern);
 
-/// Parses "1001-1100" or "1001" into the frames it names; throws Exception.
+/// Frame numbers are at most this wide in a pattern ("%09d", "#########").
+constexpr int kMaxFrameWidth = 9;
+/// At most this many frames in one call: a farm splits longer ranges.
+constexpr long kMaxFramesPerCall = 1000000;
+
+/// Parses "1001-1100" or "1001" into the frames it names (at most
+/// kMaxFramesPerCall, numbers of at most 9 digits); throws Exception.
 std::vector<int> ParseFrameRange(const std::string& text);
 
 }  // namespace bandlight::cli

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bandlight::cli
@@ -18,6 +19,18 @@ enum class PixelType
     FLOAT,
     HALF,
     UINT8,
+};
+
+/// What an image written by bandlight says about its pixels.
+struct ImageDescription
+{
+    std::string colorSpace;             ///< oiio:ColorSpace (an OCIO space name, or "sRGB")
+    std::vector<float> chromaticities;  ///< 8 values: R, G, B, white xy; empty: none
+    std::vector<std::pair<std::string, std::string>> attributes;  ///< more string attributes
+    /// When not empty, write the file under this name instead (a temporary
+    /// of an OutputSet in the caller, which renames it); errors still name
+    /// the destination.
+    std::string writeAs;
 };
 
 /// Processes interleaved float pixels in place: (pixels, width, height,
@@ -33,13 +46,13 @@ struct ImageFilesApi
                              const PixelProcess& process, const std::string& note);
     std::string (*write)(const std::string& path, const float* pixels, int width, int height,
                          int channels, const std::vector<std::string>& channelNames,
-                         const std::string& colorSpace, PixelType type);
+                         const ImageDescription& description, PixelType type);
     /// Removes the module's temporary files in flight (async-signal-safe):
     /// the module carries its own copy of AtomicFile's registry.
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 2;
+constexpr int kImageFilesApiVersion = 3;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The image-file module (see cli/ImageFiles.h): OpenImageIO reading and
 // writing, loaded on demand by the bandlight command.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <exception>
+#include <memory>
 
 #include <OpenImageIO/imageio.h>
 
@@ -32,21 +37,54 @@ void FindRgb(const OIIO::ImageSpec& spec, int rgb[3])
     }
 }
 
-void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pixels)
+/// Writes `path` atomically, or straight to `writeAs` when the caller's
+/// OutputSet owns the temporary name.
+void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pixels,
+           const std::string& writeAs = "")
 {
-    AtomicFile file(path);
-    file.stream().close();  // OIIO writes by name
+    std::unique_ptr<AtomicFile> file;
+    if (writeAs.empty())
+    {
+        file = std::make_unique<AtomicFile>(path);
+        file->stream().close();  // OIIO writes by name
+    }
+    const std::string target = writeAs.empty() ? file->tempPath() : writeAs;
     auto output = OIIO::ImageOutput::create(path);
     if (!output)
     {
         throw Exception(path + ": no image writer for this file type: " + OIIO::geterror());
     }
-    if (!output->open(file.tempPath(), spec) ||
-        !output->write_image(OIIO::TypeDesc::FLOAT, pixels) || !output->close())
+    if (!output->open(target, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
+        !output->close())
     {
         throw Exception(path + ": cannot write image: " + output->geterror());
     }
-    file.commit();
+    if (file)
+    {
+        file->commit();
+    }
+}
+
+/// Checks, before anything is allocated, that an image of this size fits:
+/// at most half the machine's memory, and dimensions OIIO can address.
+void CheckImageSize(const std::string& file, const OIIO::ImageSpec& spec)
+{
+    const double pages = double(::sysconf(_SC_PHYS_PAGES));
+    const double pageSize = double(::sysconf(_SC_PAGESIZE));
+    const double limit = pages > 0 && pageSize > 0 ? 0.5 * pages * pageSize : 8.0 * (1 << 30);
+    const double bytes = double(spec.width) * double(spec.height) *
+                         double(std::max(1, spec.depth)) * double(spec.nchannels) * 4.0;
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || !(bytes <= limit))
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.1f GiB", limit / double(1 << 30));
+        throw Exception(file + ": the header declares " + std::to_string(spec.width) + "x" +
+                        std::to_string(spec.height) + " pixels x " +
+                        std::to_string(spec.nchannels) +
+                        " channels, more than bandlight processes in memory (the limit is half "
+                        "this machine's memory, " +
+                        buf + ")");
+    }
 }
 
 std::string Transform(const std::string& in, const std::string& out, const PixelProcess& process,
@@ -65,6 +103,7 @@ std::string Transform(const std::string& in, const std::string& out, const Pixel
             throw Exception(in + ": has " + std::to_string(spec.nchannels) +
                             " channels; a colour transform needs R, G and B");
         }
+        CheckImageSize(in, spec);
         std::vector<float> pixels(spec.image_pixels() * size_t(spec.nchannels));
         if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
         {
@@ -91,7 +130,7 @@ std::string Transform(const std::string& in, const std::string& out, const Pixel
 
 std::string WriteImage(const std::string& path, const float* pixels, int width, int height,
                        int channels, const std::vector<std::string>& channelNames,
-                       const std::string& colorSpace, PixelType type)
+                       const ImageDescription& description, PixelType type)
 {
     try
     {
@@ -111,9 +150,20 @@ std::string WriteImage(const std::string& path, const float* pixels, int width, 
                 spec.alpha_channel = c;
             }
         }
-        spec.attribute("oiio:ColorSpace", colorSpace);
+        spec.attribute("oiio:ColorSpace", description.colorSpace);
+        if (description.chromaticities.size() == 8)
+        {
+            // OpenEXR's standard attribute (OIIO passes it to other formats
+            // that can carry it): the primaries and white of the pixels.
+            spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
+                           description.chromaticities.data());
+        }
+        for (const auto& [name, value] : description.attributes)
+        {
+            spec.attribute(name, value);
+        }
         spec.attribute("Software", "bandlight");
-        Write(path, spec, pixels);
+        Write(path, spec, pixels, description.writeAs);
         return {};
     }
     catch (const std::exception& e)
@@ -122,8 +172,7 @@ std::string WriteImage(const std::string& path, const float* pixels, int width, 
     }
 }
 
-const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage,
-                            &RemoveTemporaryFiles};
+const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &RemoveTemporaryFiles};
 
 }  // namespace
 }  // namespace bandlight::cli

@@ -7,8 +7,8 @@
 #include <map>
 #include <set>
 
-#include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
 
 #include "cli/Common.h"
 #include "spectral/Exception.h"
@@ -25,6 +25,15 @@ namespace
 
 /// Scene coordinates beyond this are refused: squared distances stay finite.
 constexpr double kMaxCoordinate = 1e9;
+/// Any number in a scene beyond this magnitude is refused: products of
+/// intensities, powers and remittances over a spectrum stay far from
+/// overflow (1e12 squared, times 10^4 samples, is 1e28).
+constexpr double kMaxMagnitude = 1e12;
+/// The spectral grid's step, nm: finer than 0.1 nm resolves nothing the CIE
+/// tables hold (and would take 4701+ samples a product); coarser than 50 nm
+/// cannot resolve a band.
+constexpr double kMinStepNm = 0.1;
+constexpr double kMaxStepNm = 50.0;
 
 /// Reading context: the file for messages and relative paths.
 struct Reader
@@ -60,7 +69,19 @@ struct Reader
         }
     }
 
+    /// A number with the scene-wide magnitude limit.
     double number(const YAML::Node& n, const std::string& what) const
+    {
+        const double v = finiteNumber(n, what);
+        if (std::abs(v) > kMaxMagnitude)
+        {
+            fail(n, what + " must be at most 1e12 in magnitude, got " + n.Scalar());
+        }
+        return v;
+    }
+
+    /// Any finite number, for values that check a narrower range themselves.
+    double finiteNumber(const YAML::Node& n, const std::string& what) const
     {
         if (!n.IsScalar())
         {
@@ -94,7 +115,7 @@ struct Reader
     /// An image size: a whole number of pixels, 1 to 16384.
     int pixels(const YAML::Node& n, const std::string& what) const
     {
-        const double v = number(n, what);
+        const double v = finiteNumber(n, what);
         if (!(v >= 1.0 && v <= 16384.0) || v != std::floor(v))
         {
             fail(n, what + " must be a whole number of pixels from 1 to 16384, got " + n.Scalar());
@@ -108,7 +129,7 @@ struct Reader
         {
             fail(n, what + " must be a list of three numbers [x, y, z]");
         }
-        const Vec3 v(number(n[0], what), number(n[1], what), number(n[2], what));
+        const Vec3 v(finiteNumber(n[0], what), finiteNumber(n[1], what), finiteNumber(n[2], what));
         if (v.cwiseAbs().maxCoeff() > kMaxCoordinate)
         {
             fail(n, what + " must lie within ±1e9 (got a coordinate of " +
@@ -441,6 +462,10 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
         if (rn["step"])
         {
             s.settings.stepNm = r.positive(rn["step"], "step");
+            if (!(s.settings.stepNm >= kMinStepNm && s.settings.stepNm <= kMaxStepNm))
+            {
+                r.fail(rn["step"], "step must be from 0.1 to 50 nm, got " + rn["step"].Scalar());
+            }
         }
         if (rn["output"])
         {

@@ -3,10 +3,12 @@
 // transforms. Exit codes: 0 success, 2 bad input (one line on stderr), 1
 // anything unexpected.
 #include <iostream>
+#include <new>
 
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "cli/Commands.h"
+#include "cli/Diagnostics.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
@@ -15,6 +17,10 @@ int main(int argc, char** argv)
     // An interrupted run leaves every previous output as it was, and no
     // temporary files behind.
     bandlight::RemoveTemporaryFilesOnInterrupt();
+    // A failed run prints one line: notes, progress and libraries' own
+    // messages are held back until the run has succeeded.
+    bandlight::cli::StderrCapture capture;
+    OCIO_NAMESPACE::SetLoggingFunction([](const char* message) { bandlight::cli::Note(message); });
     CLI::App app{
         "bandlight: the 3-band model of coloured light and surfaces, measured against an exact "
         "spectral core"};
@@ -30,42 +36,57 @@ int main(int argc, char** argv)
     bandlight::cli::AddAccuracyCommand(app);
     bandlight::cli::AddPlotCommand(app);
     bandlight::cli::AddRenderCommand(app);
+    // Messages may quote file names and values of any length and content:
+    // one line, bounded.
+    const auto fail = [&capture](int code, const std::string& prefix, const char* what)
+    {
+        std::cout.flush();
+        capture.finish(false, "bandlight: " + prefix + bandlight::OneLine(what, 4000));
+        return code;
+    };
     try
     {
         app.parse(argc, argv);
     }
     catch (const CLI::CallForHelp& e)
     {
+        capture.finish(true, "");
         return app.exit(e);
     }
     catch (const CLI::CallForAllHelp& e)
     {
+        capture.finish(true, "");
         return app.exit(e);
     }
     catch (const CLI::CallForVersion& e)
     {
+        capture.finish(true, "");
         return app.exit(e);
     }
     catch (const CLI::ParseError& e)
     {
-        std::cerr << "bandlight: " << e.what() << "\n";
-        return 2;
+        return fail(2, "", e.what());
     }
     catch (const bandlight::Exception& e)
     {
-        std::cerr << "bandlight: " << e.what() << "\n";
-        return 2;
+        return fail(2, "", e.what());
     }
     catch (const OCIO_NAMESPACE::Exception& e)
     {
         // OpenColorIO's own messages name the file and what is wrong with it.
-        std::cerr << "bandlight: " << e.what() << "\n";
-        return 2;
+        return fail(2, "", e.what());
+    }
+    catch (const std::bad_alloc&)
+    {
+        // Inputs are checked against stated limits before anything large is
+        // allocated; this is the last resort when memory runs out anyway.
+        return fail(2, "", "out of memory (the input asks for more than this machine has)");
     }
     catch (const std::exception& e)
     {
-        std::cerr << "bandlight: internal error: " << e.what() << "\n";
-        return 1;
+        return fail(1, "internal error: ", e.what());
     }
+    std::cout.flush();
+    capture.finish(true, "");
     return 0;
 }

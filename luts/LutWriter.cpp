@@ -40,16 +40,15 @@ void Apply(const OCIO::ConstTransformRcPtr& t, std::vector<float>& rgb)
 }
 
 void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const std::string& path,
-                const std::string& description)
+                const std::string& description, OutputSet& outputs)
 {
     if (!description.empty() && !group->getFormatMetadata().getNumChildrenElements())
     {
         group->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
     }
     OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
-    WriteFileAtomically(
-        path, [&](std::ostream& os)
-        { group->write(raw, format == LutFormat::CTF ? kCtfFormat : kClfFormat, os); });
+    outputs.write(path, [&](std::ostream& os)
+                  { group->write(raw, format == LutFormat::CTF ? kCtfFormat : kClfFormat, os); });
 }
 
 /// A config for OCIO's Baker: "lut_in" is the lattice's (encoded) input,
@@ -85,30 +84,31 @@ void SetLattice(OCIO::Lut3DTransform& lut, const std::vector<float>& lattice, in
     }
 }
 
-void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& path)
+void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& path,
+                OutputSet& outputs)
 {
     // SPI 3D LUT: "SPILUT 1.0", "3 3", the grid size, then one line per node
     // "i j k r g b"; OCIO's reader (FileFormatSpi3D) takes the indices as given.
-    WriteFileAtomically(
-        path,
-        [&](std::ostream& os)
-        {
-            os << "SPILUT 1.0\n3 3\n" << size << " " << size << " " << size << "\n";
-            os << std::setprecision(9);
-            for (int r = 0; r < size; ++r)
-            {
-                for (int g = 0; g < size; ++g)
-                {
-                    for (int b = 0; b < size; ++b)
-                    {
-                        const size_t i =
-                            (size_t(b) * size_t(size) + size_t(g)) * size_t(size) + size_t(r);
-                        os << r << ' ' << g << ' ' << b << ' ' << lattice[3 * i] << ' '
-                           << lattice[3 * i + 1] << ' ' << lattice[3 * i + 2] << '\n';
-                    }
-                }
-            }
-        });
+    outputs.write(path,
+                  [&](std::ostream& os)
+                  {
+                      os << "SPILUT 1.0\n3 3\n" << size << " " << size << " " << size << "\n";
+                      os << std::setprecision(9);
+                      for (int r = 0; r < size; ++r)
+                      {
+                          for (int g = 0; g < size; ++g)
+                          {
+                              for (int b = 0; b < size; ++b)
+                              {
+                                  const size_t i =
+                                      (size_t(b) * size_t(size) + size_t(g)) * size_t(size) +
+                                      size_t(r);
+                                  os << r << ' ' << g << ' ' << b << ' ' << lattice[3 * i] << ' '
+                                     << lattice[3 * i + 1] << ' ' << lattice[3 * i + 2] << '\n';
+                              }
+                          }
+                      }
+                  });
 }
 
 std::string ShaperCompanionPath(const std::string& path)
@@ -249,13 +249,15 @@ OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const Sha
 }
 
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& o,
-                  const std::string& path)
+                  const std::string& path, OutputSet* outputs)
 {
     if ((o.format == LutFormat::CLF || o.format == LutFormat::CTF) && isMatrix && !o.forceLattice)
     {
         LutFiles files;
         files.lut = path;
-        WriteGroup(AsGroup(exact), o.format, path, o.description);
+        OutputSet own;
+        WriteGroup(AsGroup(exact), o.format, path, o.description, outputs ? *outputs : own);
+        own.commit();
         return files;
     }
     LutOptions withDescription = o;
@@ -274,11 +276,15 @@ LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const L
             }
         }
     }
-    return WriteLut(PixelFunctionOf(exact), withDescription, path);
+    return WriteLut(PixelFunctionOf(exact), withDescription, path, outputs);
 }
 
-LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const std::string& path)
+LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const std::string& path,
+                  OutputSet* outputs)
 {
+    // The LUT and its companion shaper are one set: replaced together or not at all.
+    OutputSet own;
+    OutputSet& set = outputs ? *outputs : own;
     LutOptions o = requested;
     o.shaper = requested.shaper.alignedTo(requested.size);
     LutFiles files;
@@ -286,7 +292,8 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     files.lattice = true;
     if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
     {
-        WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description);
+        WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description, set);
+        own.commit();
         return files;
     }
     files.outputEncoded = o.shaper.kind != ShaperSpec::Kind::NONE;
@@ -294,7 +301,7 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     const std::vector<float> lattice = BakeLattice(exact, o.shaper, o.size, files.outputEncoded);
     if (o.format == LutFormat::SPI3D)
     {
-        WriteSpi3d(lattice, o.size, path);
+        WriteSpi3d(lattice, o.size, path, set);
     }
     else
     {
@@ -314,15 +321,17 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
             baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
                                                        o.description.c_str());
         }
-        WriteFileAtomically(path, [&](std::ostream& os) { baker->bake(os); });
+        set.write(path, [&](std::ostream& os) { baker->bake(os); });
     }
     if (OCIO::TransformRcPtr s = o.shaper.transform())
     {
         files.shaper = ShaperCompanionPath(path);
         OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
         g->appendTransform(s);
-        WriteGroup(g, LutFormat::CLF, files.shaper, "bandlight shaper, " + o.shaper.describe());
+        WriteGroup(g, LutFormat::CLF, files.shaper, "bandlight shaper, " + o.shaper.describe(),
+                   set);
     }
+    own.commit();
     return files;
 }
 

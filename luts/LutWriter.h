@@ -8,6 +8,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "luts/Shaper.h"
+#include "spectral/AtomicFile.h"
 
 namespace bandlight
 {
@@ -72,8 +73,12 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
 /// before the LUT and its inverse after (so 3dl's integer output holds HDR
 /// too). spi3d is written here because OCIO 2.1 offers no spi3d writer; OCIO
 /// reads it back in the tests.
+///
+/// The LUT and its shaper are one set of outputs: with `outputs` they join
+/// that set (the caller commits it); without, they are replaced together
+/// when both are written, or neither is.
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& options,
-                  const std::string& path);
+                  const std::string& path, OutputSet* outputs = nullptr);
 
 /// What WriteLut wrote, read back as one transform through OCIO's own file
 /// readers: the companion shaper (if any), the LUT (tetrahedral), and the
@@ -82,6 +87,7 @@ OCIO::GroupTransformRcPtr ReadLutFiles(const LutFiles& files);
 
 /// The same for a transform that exists only as a pixel function: always a
 /// lattice (CLF/CTF hold shaper + 3D LUT + inverse shaper).
-LutFiles WriteLut(const PixelFunction& exact, const LutOptions& options, const std::string& path);
+LutFiles WriteLut(const PixelFunction& exact, const LutOptions& options, const std::string& path,
+                  OutputSet* outputs = nullptr);
 
 }  // namespace bandlight

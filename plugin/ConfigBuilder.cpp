@@ -9,6 +9,7 @@
 
 #include <Eigen/LU>
 
+#include "plugin/ConfigReferences.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
@@ -350,6 +351,7 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
                            std::string* identifiedSpace)
 {
     RequireLights(o);
+    CheckConfigReferences(base, "the base config");
     OCIO::ConstColorSpaceRcPtr sceneLinear = base->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
     if (!sceneLinear)
     {
@@ -437,7 +439,7 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
     return package;
 }
 
-void WriteConfigPackage(const ConfigPackage& package, const std::string& dir)
+void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, OutputSet* outputs)
 {
     auto makeDir = [](const std::string& d)
     {
@@ -451,16 +453,19 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir)
     {
         makeDir(dir + "/" + kLutFolder);
     }
-    // The LUTs first: a config is never left pointing at files not yet there.
+    // The config and its LUTs are one set: a config is never left pointing
+    // at LUTs of another run, nor LUTs replaced under an old config.
+    OutputSet own;
+    OutputSet& set = outputs ? *outputs : own;
     OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
     for (const auto& lut : package.lutFiles)
     {
         const auto& transform = lut.second;
-        WriteFileAtomically(dir + "/" + lut.first, [&](std::ostream& os)
-                            { transform->write(raw, "Academy/ASC Common LUT Format", os); });
+        set.write(dir + "/" + lut.first, [&](std::ostream& os)
+                  { transform->write(raw, "Academy/ASC Common LUT Format", os); });
     }
-    WriteFileAtomically(dir + "/config.ocio",
-                        [&](std::ostream& os) { package.config->serialize(os); });
+    set.write(dir + "/config.ocio", [&](std::ostream& os) { package.config->serialize(os); });
+    own.commit();
 }
 
 }  // namespace bandlight

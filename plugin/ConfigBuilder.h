@@ -7,6 +7,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "plugin/OcioTransforms.h"
+#include "spectral/AtomicFile.h"
 
 namespace bandlight
 {
@@ -54,8 +55,11 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions opt
                            std::string* identifiedSpace = nullptr);
 
 /// Writes the package as DIR/config.ocio plus its LUT files (creating the
-/// folders), every file atomically.
-void WriteConfigPackage(const ConfigPackage& package, const std::string& dir);
+/// folders), as one set of outputs: all files are replaced together once
+/// all are written, or none is. With `outputs`, the files join that set
+/// and the caller commits it.
+void WriteConfigPackage(const ConfigPackage& package, const std::string& dir,
+                        OutputSet* outputs = nullptr);
 
 /// The named transform that carries the same transform as a look:
 /// "relight_<look>" (OCIO does not let the two share a name).

@@ -96,15 +96,28 @@ AtomicFile::~AtomicFile()
     Unregister(m_slot);
 }
 
+void AtomicFile::finishWriting()
+{
+    if (m_stream.is_open())
+    {
+        m_stream.flush();
+        const bool ok = bool(m_stream);
+        m_stream.close();
+        if (!ok)
+        {
+            throw Exception(m_path + ": write failed (disk full?)");
+        }
+    }
+    // A writer that used tempPath() directly must have left a file there.
+    if (::access(m_temp.c_str(), F_OK) != 0)
+    {
+        throw Exception(m_path + ": the output was not written");
+    }
+}
+
 void AtomicFile::commit()
 {
-    m_stream.flush();
-    const bool ok = bool(m_stream);
-    m_stream.close();
-    if (!ok)
-    {
-        throw Exception(m_path + ": write failed (disk full?)");
-    }
+    finishWriting();
     if (std::rename(m_temp.c_str(), m_path.c_str()) != 0)
     {
         throw Exception(m_path + ": cannot replace output file (" + std::strerror(errno) + ")");
@@ -112,6 +125,80 @@ void AtomicFile::commit()
     m_committed = true;
     Unregister(m_slot);
     m_slot = -1;
+}
+
+AtomicFile& OutputSet::add(const std::string& path)
+{
+    for (const auto& f : m_files)
+    {
+        if (f->path() == path)
+        {
+            throw Exception(path + ": the same output is written twice");
+        }
+    }
+    m_files.push_back(std::make_unique<AtomicFile>(path));
+    return *m_files.back();
+}
+
+void OutputSet::write(const std::string& path, const std::function<void(std::ostream&)>& fill)
+{
+    AtomicFile& f = add(path);
+    fill(f.stream());
+    f.finishWriting();
+}
+
+void OutputSet::commit()
+{
+    for (const auto& f : m_files)
+    {
+        f->finishWriting();
+    }
+    // Backups of the destinations that exist, as hard links (same folder,
+    // no copy); where a link cannot be made there is no rollback for it.
+    std::vector<std::string> backups(m_files.size());
+    for (size_t i = 0; i < m_files.size(); ++i)
+    {
+        const std::string backup = m_files[i]->m_temp + ".previous";
+        if (::link(m_files[i]->m_path.c_str(), backup.c_str()) == 0)
+        {
+            backups[i] = backup;
+        }
+    }
+    size_t done = 0;
+    std::string failure;
+    for (; done < m_files.size(); ++done)
+    {
+        AtomicFile& f = *m_files[done];
+        if (std::rename(f.m_temp.c_str(), f.m_path.c_str()) != 0)
+        {
+            failure = f.m_path + ": cannot replace output file (" + std::strerror(errno) + ")";
+            break;
+        }
+        f.m_committed = true;
+    }
+    for (size_t i = 0; i < m_files.size(); ++i)
+    {
+        if (!failure.empty() && i < done)
+        {
+            // Put the previous file back, or remove the new one if there was none.
+            if (!backups[i].empty())
+            {
+                std::rename(backups[i].c_str(), m_files[i]->m_path.c_str());
+            }
+            else
+            {
+                std::remove(m_files[i]->m_path.c_str());
+            }
+        }
+        else if (!backups[i].empty())
+        {
+            std::remove(backups[i].c_str());
+        }
+    }
+    if (!failure.empty())
+    {
+        throw Exception(failure + "; the other outputs of the set were left as they were");
+    }
 }
 
 void RemoveTemporaryFiles() noexcept

@@ -3,7 +3,9 @@
 
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace bandlight
 {
@@ -31,12 +33,54 @@ public:
     /// Exception naming the file on any write or rename failure.
     void commit();
 
+    /// The destination path.
+    const std::string& path() const noexcept { return m_path; }
+
+    /// The first half of commit(): flushes and closes the temporary file and
+    /// throws Exception naming the file when anything written failed. The
+    /// destination is not touched yet (OutputSet renames a set together).
+    void finishWriting();
+
 private:
+    friend class OutputSet;
     std::string m_path;
     std::string m_temp;
     std::ofstream m_stream;
     bool m_committed = false;
     int m_slot = -1;  ///< registration for RemoveTemporaryFilesOnInterrupt()
+};
+
+/// A set of outputs that belong together (a config and its LUTs, a LUT and
+/// its shaper, an image and its preview) and are replaced together or not
+/// at all: every file is written to its temporary name; commit() renames
+/// them over their destinations only once every one of them was written
+/// completely. If a rename fails part-way (the destination folder vanished,
+/// a permission changed), the destinations already replaced get their
+/// previous contents back from hard-linked backups, so a failing run never
+/// leaves a mixed set. Destroyed without commit(), it removes every
+/// temporary file.
+class OutputSet
+{
+public:
+    OutputSet() = default;
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+
+    /// Adds an output to the set; the reference stays valid for the set's
+    /// life. Throws Exception when its temporary file cannot be created or
+    /// when the same path is added twice.
+    AtomicFile& add(const std::string& path);
+
+    /// Writes a whole file of the set through a callback that fills it.
+    void write(const std::string& path, const std::function<void(std::ostream&)>& fill);
+
+    /// Renames every file of the set over its destination (see above).
+    void commit();
+
+    size_t size() const noexcept { return m_files.size(); }
+
+private:
+    std::vector<std::unique_ptr<AtomicFile>> m_files;
 };
 
 /// Installs SIGINT, SIGTERM and SIGHUP handlers that remove the temporary

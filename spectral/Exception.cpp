@@ -44,4 +44,19 @@ std::string OneLine(const std::string& text)
     return out;
 }
 
+std::string OneLine(const std::string& text, size_t maxBytes)
+{
+    if (text.size() <= maxBytes)
+    {
+        return OneLine(text);
+    }
+    size_t cut = maxBytes;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+    {
+        --cut;  // do not split a UTF-8 sequence
+    }
+    return OneLine(text.substr(0, cut)) + "...(" + std::to_string(text.size() - cut) +
+           " more bytes)";
+}
+
 }  // namespace bandlight

@@ -19,6 +19,11 @@ public:
 /// ("\\n", "\\x01"), so that a value quoted from a file keeps a message on one line.
 std::string OneLine(const std::string& text);
 
+/// OneLine(text), cut to at most `maxBytes` bytes of the original with
+/// "...(N more bytes)" after it: for echoing user input (names, patterns,
+/// arguments) that may be of any length.
+std::string OneLine(const std::string& text, size_t maxBytes);
+
 /// Formats "FILE:LINE: what" (LINE omitted when 0), the prefix every parse error uses.
 std::string SourcePosition(const std::string& source, size_t line);
 

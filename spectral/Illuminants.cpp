@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 
 namespace bandlight
@@ -159,6 +160,43 @@ Spectrum BuiltinIlluminant(const std::string& name)
     throw Exception("unknown illuminant '" + name +
                     "' (built-in: A, C, D50, D55, D65, D75, Dnn, E, F1-F12, "
                     "a blackbody as 3200K or BB3200, or a spectrum file)");
+}
+
+Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
+{
+    double peak = 0.0;
+    for (const double v : illuminant.values())
+    {
+        if (!std::isfinite(v))
+        {
+            throw Exception(source + ": an illuminant must be finite everywhere");
+        }
+        peak = std::max(peak, std::abs(v));
+    }
+    if (!(peak > 0.0))
+    {
+        throw Exception(source +
+                        ": the illuminant has no power (all values are 0): it has no white");
+    }
+    int exponent = 0;
+    std::frexp(peak, &exponent);
+    Spectrum scaled = illuminant;
+    for (double& v : scaled.values())
+    {
+        v = std::ldexp(v, -exponent);
+    }
+    // The yardstick: equal energy at the same peak over 380–780 nm.
+    const Spectrum flat = Spectrum::Constant(380.0, 5.0, 81, 1.0);
+    const double y = IntegrateXyz(scaled, Observer::CIE1931_2DEG).y();
+    const double yFlat = IntegrateXyz(flat, Observer::CIE1931_2DEG).y();
+    if (!(y >= 1e-6 * yFlat))
+    {
+        throw Exception(source +
+                        ": the illuminant has no power where the eye sees (its luminance is " +
+                        (y > 0.0 ? "below 1e-6 of an equal-energy light's" : "not positive") +
+                        "): it has no white");
+    }
+    return scaled;
 }
 
 }  // namespace bandlight

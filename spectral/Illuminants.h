@@ -48,6 +48,16 @@ Spectrum BuiltinIlluminant(const std::string& name);
 /// True when name is understood by BuiltinIlluminant.
 bool IsBuiltinIlluminant(const std::string& name);
 
+/// An illuminant taken from data, made safe to integrate. Its scale never
+/// matters (colours are relative to its white), so it is scaled by a power
+/// of two — exactly — until its largest |value| lies in [0.5, 1): values
+/// near the double range (1e308) or denormal ones then integrate like any
+/// other. It must have a white: a luminance (CIE 1931 ȳ) of at least 1e-6
+/// of an equal-energy light of the same peak over 380–780 nm. Throws Exception
+/// naming `source` for an illuminant with no power, only non-finite or
+/// negative luminance, or power only where the eye sees nothing.
+Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source);
+
 /// The canonical spelling of a built-in illuminant name ("d65" → "D65").
 std::string CanonicalIlluminantName(const std::string& name);
 

@@ -26,7 +26,13 @@ std::string Nm(double v)
 
 [[noreturn]] void Fail(const std::string& source, size_t line, const std::string& what)
 {
-    throw Exception(SourcePosition(source, line) + ": " + OneLine(what));
+    throw Exception(SourcePosition(source, line) + ": " + OneLine(what, 2000));
+}
+
+/// A value from a file, as messages quote it: one line, at most 80 bytes.
+std::string Quoted(const std::string& token)
+{
+    return "'" + OneLine(token, 80) + "'";
 }
 
 /// Parses a whole token as a finite double; NaN, Inf and trailing garbage
@@ -40,15 +46,15 @@ double ParseNumber(const std::string& token, const std::string& source, size_t l
     const double v = std::strtod(begin, &end);
     if (end == begin || *end != '\0')
     {
-        Fail(source, line, std::string("expected a number for ") + what + ", got '" + token + "'");
+        Fail(source, line, std::string("expected a number for ") + what + ", got " + Quoted(token));
     }
     if (std::isnan(v))
     {
-        Fail(source, line, std::string("NaN ('") + token + "') is not allowed for " + what);
+        Fail(source, line, std::string("NaN (") + Quoted(token) + ") is not allowed for " + what);
     }
     if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0))
     {
-        Fail(source, line, std::string("value out of range for ") + what + ": '" + token + "'");
+        Fail(source, line, std::string("value out of range for ") + what + ": " + Quoted(token));
     }
     return v;
 }
@@ -185,7 +191,7 @@ std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& s
             if (columnCount < 2)
             {
                 Fail(source, lineNo,
-                     "expected a wavelength column and at least one spectrum, got '" + t + "'");
+                     "expected a wavelength column and at least one spectrum, got " + Quoted(t));
             }
             columns.resize(columnCount - 1);
             if (!LooksNumeric(cells[0]))
@@ -203,18 +209,17 @@ std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& s
         {
             Fail(source, lineNo,
                  "expected " + std::to_string(columnCount) + " columns, got " +
-                     std::to_string(cells.size()) + " in '" + t + "'");
+                     std::to_string(cells.size()) + " in " + Quoted(t));
         }
         const double w = ParseNumber(cells[0], source, lineNo, "the wavelength");
         if (!wl.empty() && !(w > wl.back()))
         {
             Fail(source, lineNo,
-                 "wavelengths must increase: " + cells[0] + " nm follows " + Nm(wl.back()) +
-                     " nm");
+                 "wavelengths must increase: " + cells[0] + " nm follows " + Nm(wl.back()) + " nm");
         }
         if (w <= 0.0)
         {
-            Fail(source, lineNo, "wavelength must be positive, got '" + cells[0] + "'");
+            Fail(source, lineNo, "wavelength must be positive, got " + Quoted(cells[0]));
         }
         wl.push_back(w);
         for (size_t c = 1; c < columnCount; ++c)
@@ -244,8 +249,13 @@ struct Token
     size_t line;
 };
 
+/// At most this many tokens in a CGATS file: 2000 spectra of 1 nm data
+/// over 300–830 nm hold about 1.1 million; the limit keeps a hostile file
+/// of 64 MiB of one-character tokens from taking gigabytes.
+constexpr size_t kMaxCgatsTokens = size_t(4) << 20;
+
 /// Splits CGATS text into tokens, honouring "quoted strings" and '#' comments.
-std::vector<Token> TokenizeCgats(std::istream& in)
+std::vector<Token> TokenizeCgats(std::istream& in, const std::string& source)
 {
     std::vector<Token> tokens;
     std::string line;
@@ -256,6 +266,12 @@ std::vector<Token> TokenizeCgats(std::istream& in)
         size_t i = 0;
         while (i < line.size())
         {
+            if (tokens.size() >= kMaxCgatsTokens)
+            {
+                Fail(source, lineNo,
+                     "more than " + std::to_string(kMaxCgatsTokens) +
+                         " values and keywords, the limit for a CGATS file");
+            }
             const char c = line[i];
             if (c == ' ' || c == '\t' || c == '\r')
             {
@@ -296,7 +312,7 @@ double FieldWavelength(const std::string& field)
 
 std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string& source)
 {
-    const std::vector<Token> tokens = TokenizeCgats(in);
+    const std::vector<Token> tokens = TokenizeCgats(in, source);
     if (tokens.empty())
     {
         Fail(source, 0, "empty file: not a CGATS file");
@@ -369,9 +385,16 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
 
     std::vector<size_t> specColumns;
     size_t idColumn = fields.size();
+    std::map<std::string, size_t> seen;
     for (size_t c = 0; c < fields.size(); ++c)
     {
         const std::string& f = fields[c].text;
+        if (!seen.emplace(f, c).second)
+        {
+            Fail(source, fields[c].line,
+                 "field " + Quoted(f) + " appears twice in BEGIN_DATA_FORMAT (column " +
+                     std::to_string(seen[f] + 1) + " and " + std::to_string(c + 1) + ")");
+        }
         if (f.rfind("SPEC_", 0) == 0)
         {
             specColumns.push_back(c);
@@ -442,6 +465,12 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
             const Token& tok = data[s * nf + specColumns[b]];
             v[b] =
                 ParseNumber(tok.text, source, tok.line, fields[specColumns[b]].text.c_str()) / norm;
+            if (!std::isfinite(v[b]))
+            {
+                Fail(source, tok.line,
+                     "value " + Quoted(tok.text) + " divided by SPECTRAL_NORM " +
+                         keywords["SPECTRAL_NORM"].text + " is out of range");
+            }
         }
         std::string name = idColumn < nf ? data[s * nf + idColumn].text : std::to_string(s + 1);
         out.push_back({std::move(name), Spectrum(start, step, std::move(v))});
@@ -449,8 +478,7 @@ std::vector<NamedSpectrum> ReadCgatsSpectra(std::istream& in, const std::string&
     return out;
 }
 
-std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source,
-                         bool remittance)
+std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source, bool remittance)
 {
     constexpr double kFirst = 380.0;
     constexpr double kLast = 780.0;
@@ -487,6 +515,18 @@ std::string RemittanceRangeNote(const NamedSpectrum& spectrum, const std::string
     }
     return source + ": " + spectrum.name + " has remittance values outside [0, 1] (" + Nm(*lo) +
            " to " + Nm(*hi) + "): used as given, not clipped";
+}
+
+void CheckRemittanceMagnitude(const NamedSpectrum& spectrum, const std::string& source)
+{
+    for (const double v : spectrum.spectrum.values())
+    {
+        if (!(std::abs(v) <= MAX_REMITTANCE))
+        {
+            throw Exception(source + ": '" + OneLine(spectrum.name, 80) + "' has a remittance of " +
+                            Nm(v) + "; remittances beyond ±" + Nm(MAX_REMITTANCE) + " are refused");
+        }
+    }
 }
 
 std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::string& source)

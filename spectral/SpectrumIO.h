@@ -51,11 +51,19 @@ std::vector<NamedSpectrum> ReadSpectraText(const std::string& text, const std::s
 /// short of the visible range 380–780 nm, as one line for the user, or ""
 /// when it covers that range: a remittance's end values are held constant
 /// (CIE 15:2004 §7.2.1), an illuminant or emission is zero there.
-std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source,
-                         bool remittance);
+std::string CoverageNote(const NamedSpectrum& spectrum, const std::string& source, bool remittance);
 
 /// A note when a remittance leaves [0, 1] (measured data: noise below 0,
 /// fluorescent whitening above 1), or "": such values are used as given.
 std::string RemittanceRangeNote(const NamedSpectrum& spectrum, const std::string& source);
+
+/// Remittances beyond this magnitude are not remittances (reflected over
+/// incident light exceeds 1 only by fluorescence, never by orders of
+/// magnitude).
+constexpr double MAX_REMITTANCE = 1000.0;
+
+/// Throws Exception "SOURCE: 'NAME' has a remittance of V; remittances
+/// beyond ±1000 are refused" for a value beyond MAX_REMITTANCE.
+void CheckRemittanceMagnitude(const NamedSpectrum& spectrum, const std::string& source);
 
 }  // namespace bandlight

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight
 {
@@ -132,17 +133,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
             }
         }
     };
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-    {
-        pool.emplace_back(work);
-    }
-    work();
-    for (std::thread& t : pool)
-    {
-        t.join();
-    }
+    ParallelRun(0, pairs.size(), work);
     return rows;
 }
 

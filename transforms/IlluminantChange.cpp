@@ -13,6 +13,7 @@
 
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
 #include "transforms/SpectralMethods.h"
 #include "transforms/Upsampler.h"
@@ -46,7 +47,7 @@ BandBasis MakeBandBasis(const BandSet& bands, Observer observer)
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(out.b, Eigen::ComputeThinU | Eigen::ComputeThinV);
     const auto& s = svd.singularValues();
     CheckBandCondition(bands, s(s.size() - 1) > 0.0 ? s(0) / s(s.size() - 1)
-                                                     : std::numeric_limits<double>::infinity());
+                                                    : std::numeric_limits<double>::infinity());
     out.pinv = svd.matrixV() * s.cwiseInverse().asDiagonal() * svd.matrixU().transpose();
     return out;
 }
@@ -73,10 +74,10 @@ MethodSpec ParseMethod(const std::string& name)
     MethodSpec m;
     m.name = n;
     static const std::pair<const char*, ChangeMethod> kFixed[] = {
-        {"none", ChangeMethod::NONE},          {"vonkries", ChangeMethod::VON_KRIES},
-        {"bradford", ChangeMethod::BRADFORD},  {"cat02", ChangeMethod::CAT02},
-        {"fit3x3", ChangeMethod::FIT3X3},      {"prefilter", ChangeMethod::PREFILTER},
-        {"metamer", ChangeMethod::METAMER},    {"upsample", ChangeMethod::UPSAMPLE},
+        {"none", ChangeMethod::NONE},         {"vonkries", ChangeMethod::VON_KRIES},
+        {"bradford", ChangeMethod::BRADFORD}, {"cat02", ChangeMethod::CAT02},
+        {"fit3x3", ChangeMethod::FIT3X3},     {"prefilter", ChangeMethod::PREFILTER},
+        {"metamer", ChangeMethod::METAMER},   {"upsample", ChangeMethod::UPSAMPLE},
         {"spectral", ChangeMethod::SPECTRAL},
     };
     const auto fixed = std::find_if(std::begin(kFixed), std::end(kFixed),
@@ -387,30 +388,8 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
             p[2] = float(out.z());
         }
     };
-    if (threads <= 0)
-    {
-        threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    }
-    if (threads == 1 || count < 1024)
-    {
-        run(0, count);
-        return;
-    }
-    std::vector<std::thread> pool;
-    const size_t chunk = (count + size_t(threads) - 1) / size_t(threads);
-    for (int t = 0; t < threads; ++t)
-    {
-        const size_t b = chunk * size_t(t);
-        const size_t e = std::min(count, b + chunk);
-        if (b < e)
-        {
-            pool.emplace_back(run, b, e);
-        }
-    }
-    for (std::thread& th : pool)
-    {
-        th.join();
-    }
+    // Below 1024 pixels a thread costs more than it saves.
+    ParallelFor(count, count < 1024 ? 1 : threads, run);
 }
 
 }  // namespace bandlight

@@ -79,7 +79,12 @@ double LightScale(const SceneSpectrum& s, const BandSet& bands)
 
 Grid MakeGrid(double step)
 {
-    // 360–830 nm, the matching functions' range.
+    // 360–830 nm, the matching functions' range; the step bounded so the
+    // sample count is a sane int (scene files refuse the same range).
+    if (!(step >= 0.1 && step <= 50.0))
+    {
+        throw Exception("spectral step " + std::to_string(step) + " nm is outside 0.1-50 nm");
+    }
     return {step, int(std::floor((830.0 - 360.0) / step + 1e-9)) + 1};
 }
 
@@ -285,8 +290,9 @@ void CheckScene(const Scene& s)
         if (!p.point.allFinite() || !p.normal.allFinite() ||
             !(std::abs(p.normal.norm() - 1.0) < 1e-6))
         {
-            throw Exception("a plane needs a finite point and a unit normal (zero-length normals "
-                            "have no direction)");
+            throw Exception(
+                "a plane needs a finite point and a unit normal (zero-length normals "
+                "have no direction)");
         }
     }
     for (const SceneLight& l : s.lights)
@@ -311,7 +317,8 @@ void CheckScene(const Scene& s)
     {
         if (!(m.exponent >= 0.0) || !std::isfinite(m.exponent))
         {
-            throw Exception("material '" + m.name + "': the Phong exponent must be finite and not "
+            throw Exception("material '" + m.name +
+                            "': the Phong exponent must be finite and not "
                             "negative");
         }
     }

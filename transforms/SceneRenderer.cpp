@@ -7,13 +7,13 @@
 #include <map>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "spectral/CieData.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
 #include "transforms/SceneColour.h"
 
@@ -163,28 +163,15 @@ Factors LightFactors(const SceneLight& l, const Hit& hit, const Vec3& toEye, dou
 template <typename PixelFn>
 void ForEachRow(int height, int threads, PixelFn&& rowFn)
 {
-    if (threads <= 0)
-    {
-        threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    }
     std::atomic<int> next{0};
-    auto work = [&]
-    {
-        for (int y; (y = next++) < height;)
-        {
-            rowFn(y);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-    {
-        pool.emplace_back(work);
-    }
-    work();
-    for (std::thread& t : pool)
-    {
-        t.join();
-    }
+    ParallelRun(threads, size_t(std::max(height, 0)),
+                [&]
+                {
+                    for (int y; (y = next++) < height;)
+                    {
+                        rowFn(y);
+                    }
+                });
 }
 
 /// A black image of the camera's size in the output's channels.
@@ -245,6 +232,17 @@ RenderedImage CastRays(const Scene& s, const Output& out, int threads, RenderCou
     if (counters)
     {
         *counters = total;
+    }
+    // A render never leaves with Inf or NaN in it: values that large come
+    // from the scene (intensities, powers or spectra near the double range),
+    // and saying so beats writing an image no host can display.
+    const size_t bad = size_t(std::count_if(img.pixels.begin(), img.pixels.end(),
+                                            [](float v) { return !std::isfinite(v); }));
+    if (bad > 0)
+    {
+        throw Exception("the render overflowed: " + std::to_string(bad) +
+                        " pixel values are not finite floats (an intensity, power or spectrum "
+                        "value in the scene is too large)");
     }
     return img;
 }

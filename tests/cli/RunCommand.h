@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -32,7 +33,8 @@ inline std::string TempPath(const std::string& name)
 /// Runs a shell command line; captures stdout, stderr and the exit code.
 inline Result Sh(const std::string& command)
 {
-    const std::string errFile = TempPath("stderr.txt");
+    // One file per test process: ctest runs test processes in parallel.
+    const std::string errFile = TempPath("stderr." + std::to_string(::getpid()) + ".txt");
     Result r;
     FILE* p = popen((command + " 2>'" + errFile + "'").c_str(), "r");
     REQUIRE(p);

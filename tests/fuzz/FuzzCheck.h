@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
@@ -68,8 +69,7 @@ inline std::string Text(const uint8_t* data, size_t size)
 /// computes from its result: XYZ as an emission, as a remittance under D65,
 /// and band means (which may refuse a spectrum that misses a band, by name).
 template <typename Reader>
-int FuzzSpectrumReader(const uint8_t* data, size_t size, const std::string& source,
-                       Reader&& read)
+int FuzzSpectrumReader(const uint8_t* data, size_t size, const std::string& source, Reader&& read)
 {
     std::vector<NamedSpectrum> spectra;
     try
@@ -85,9 +85,42 @@ int FuzzSpectrumReader(const uint8_t* data, size_t size, const std::string& sour
     static const Spectrum d65 = BuiltinIlluminant("D65");
     for (const NamedSpectrum& s : spectra)
     {
-        const Vec3 e = IntegrateXyz(s.spectrum, Observer::CIE1931_2DEG);
-        const Vec3 r = SurfaceXyz(s.spectrum, d65, Observer::CIE1931_2DEG);
-        Check(e.allFinite() && r.allFinite(), "XYZ of a parsed spectrum is not finite");
+        // As a remittance (what `xyz --reflectance` accepts): finite XYZ and L*a*b*.
+        bool remittance = true;
+        try
+        {
+            CheckRemittanceMagnitude(s, source);
+        }
+        catch (const Exception& e)
+        {
+            CheckMessage(e, source);
+            remittance = false;
+        }
+        if (remittance)
+        {
+            const Vec3 r = SurfaceXyz(s.spectrum, d65, Observer::CIE1931_2DEG);
+            const Vec3 lab = XyzToLab(r, IlluminantWhiteXyz(d65, Observer::CIE1931_2DEG));
+            Check(r.allFinite() && lab.allFinite(), "XYZ of an accepted remittance is not finite");
+        }
+        // As an illuminant (what `xyz --illuminant` and `cri` accept): a
+        // finite white, and finite colours of the test samples under it.
+        try
+        {
+            const Spectrum light = UsableIlluminant(s.spectrum, source);
+            const Vec3 white = IlluminantWhiteXyz(light, Observer::CIE1931_2DEG);
+            Check(white.allFinite() && white.y() > 0.0, "white of an accepted illuminant");
+            const XyzIntegrator integrate(light, Observer::CIE1931_2DEG);
+            for (const NamedSpectrum& tcs : TestColourSamples())
+            {
+                const Vec3 x = integrate(tcs.spectrum);
+                Check(x.allFinite() && XyzToLab(x, white).allFinite(),
+                      "colour under an accepted illuminant is not finite");
+            }
+        }
+        catch (const Exception& e)
+        {
+            CheckMessage(e, source);
+        }
         try
         {
             for (double b : RemittanceBands(s.spectrum, BandSet::Lecture()))

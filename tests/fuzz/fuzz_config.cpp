@@ -8,6 +8,7 @@
 
 #include "FuzzCheck.h"
 #include "plugin/ConfigBuilder.h"
+#include "plugin/ConfigReferences.h"
 #include "spectral/Illuminants.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -29,6 +30,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     }
     catch (const OCIO::Exception&)
     {
+        return 0;
+    }
+    // What `config --base` and `apply --config` do first: refuse a config
+    // that refers to itself (OCIO would recurse until the stack overflows).
+    try
+    {
+        CheckConfigReferences(base, "fuzz.ocio");
+    }
+    catch (const Exception& e)
+    {
+        fuzz::CheckMessage(e, "fuzz.ocio");
         return 0;
     }
     ConfigOptions options;

@@ -31,8 +31,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     {
         return 0;
     }
-    for (const RenderedImage& img : {RenderScene(scene, plan, 1), RenderSceneUnplanned(scene, 1)})
+    // Both paths render finite pixels, or refuse with the renderer's message.
+    for (const bool planned : {true, false})
     {
+        RenderedImage img;
+        try
+        {
+            img = planned ? RenderScene(scene, plan, 1) : RenderSceneUnplanned(scene, 1);
+        }
+        catch (const Exception& e)
+        {
+            fuzz::CheckMessage(e, "the render overflowed");
+            continue;
+        }
         fuzz::Check(img.pixels.size() == size_t(4 * 3 * img.channels), "wrong image size");
         for (float v : img.pixels)
         {

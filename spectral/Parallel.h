@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace bandlight
+{
+
+/// At most this many threads for any one job: more than any machine
+/// bandlight runs on has cores, and few enough that asking for them cannot
+/// exhaust the process's thread or memory limits.
+constexpr int kMaxThreads = 256;
+
+/// The thread count a job actually uses: `requested` threads (0 or less:
+/// one per core), at most kMaxThreads and at most `work` (one thread per
+/// unit of work at most), at least 1.
+inline int ThreadCount(int requested, size_t work)
+{
+    int n = requested > 0 ? requested : int(std::max(1u, std::thread::hardware_concurrency()));
+    n = std::min(n, kMaxThreads);
+    n = int(std::min<size_t>(size_t(n), std::max<size_t>(work, 1)));
+    return std::max(n, 1);
+}
+
+/// Splits [0, count) into one contiguous range per thread and calls
+/// `fn(begin, end)` for each, the last range on the calling thread. When
+/// the system refuses a thread (std::system_error: resource limits), the
+/// ranges it would have run are run on the calling thread instead: the
+/// result is the same, only slower. `fn` must not throw.
+template <typename RangeFn>
+void ParallelFor(size_t count, int threads, RangeFn&& fn)
+{
+    const int n = ThreadCount(threads, count);
+    if (n == 1 || count == 0)
+    {
+        fn(size_t(0), count);
+        return;
+    }
+    const size_t chunk = (count + size_t(n) - 1) / size_t(n);
+    std::vector<std::thread> pool;
+    std::vector<std::pair<size_t, size_t>> leftover;
+    for (int t = 0; t < n; ++t)
+    {
+        const size_t b = chunk * size_t(t);
+        const size_t e = std::min(count, b + chunk);
+        if (b >= e)
+        {
+            continue;
+        }
+        if (t == n - 1)
+        {
+            leftover.push_back({b, e});
+            continue;
+        }
+        try
+        {
+            pool.emplace_back([&fn, b, e] { fn(b, e); });
+        }
+        catch (const std::system_error&)
+        {
+            leftover.push_back({b, e});
+        }
+    }
+    for (const auto& [b, e] : leftover)
+    {
+        fn(b, e);
+    }
+    for (std::thread& th : pool)
+    {
+        th.join();
+    }
+}
+
+/// Runs `work()` on `threads` threads at once (including the calling one),
+/// for jobs that take their own items from a shared counter. Threads the
+/// system refuses are simply not started. `work` must not throw.
+template <typename WorkFn>
+void ParallelRun(int threads, size_t items, WorkFn&& work)
+{
+    const int n = ThreadCount(threads, items);
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t)
+    {
+        try
+        {
+            pool.emplace_back([&work] { work(); });
+        }
+        catch (const std::system_error&)
+        {
+            break;
+        }
+    }
+    work();
+    for (std::thread& th : pool)
+    {
+        th.join();
+    }
+}
+
+}  // namespace bandlight
