@@ -24,6 +24,7 @@ struct ConfigCommandOptions
     std::string illuminants = "A,C,D65,F2,F11";
     std::string methods;
     std::string observer;
+    std::string basePaths = "relative";
 };
 
 void RunConfig(const ConfigCommandOptions& o)
@@ -37,6 +38,8 @@ void RunConfig(const ConfigCommandOptions& o)
     }
     options.methods = o.methods.empty() ? LinearMethodNames() : SplitList(o.methods);
     options.workingSpace = o.workingSpace.empty() ? "acescg" : o.workingSpace;
+    options.outputDir = o.out;
+    options.absoluteBasePaths = o.basePaths == "absolute";
 
     ConfigPackage package;
     std::string identified;
@@ -60,6 +63,16 @@ void RunConfig(const ConfigCommandOptions& o)
         std::cout << ", and " << package.lutFiles.size() << " LUT files in " << o.out << "/luts";
     }
     std::cout << "\n";
+    if (!package.evidence.empty())
+    {
+        std::cout << "scene_linear identified as " << identified << ": " << package.evidence
+                  << "\n";
+    }
+    if (package.v1)
+    {
+        std::cout << "the base is an OCIO v1 config and so is the result: its looks are CLF files "
+                     "(read by OpenColorIO 2 hosts), and v1 has no named transforms\n";
+    }
 }
 
 }  // namespace
@@ -72,7 +85,14 @@ void AddConfigCommand(CLI::App& app)
     cmd->add_option("--out", o->out, "Directory to write config.ocio into (created if needed)")
         ->required();
     cmd->add_option("--base", o->base,
-                    "Existing config to add the looks and band space to, leaving the rest intact");
+                    "Existing config (OCIO v1 or v2) to add the looks and band space to, leaving "
+                    "the rest intact");
+    cmd->add_option("--base-paths", o->basePaths,
+                    "With --base: the base's relative LUT search paths, rewritten to reach the "
+                    "base's folder from --out: relative (the two folders move together) or "
+                    "absolute (the output moves alone)")
+        ->check(CLI::IsMember({"relative", "absolute"}))
+        ->capture_default_str();
     cmd->add_option("--working-space", o->workingSpace,
                     "Linear working space: acescg (default), aces2065-1, lin-rec709, rec2020, "
                     "p3-d65, ebu3213; with --base, the base's scene_linear primaries (detected "

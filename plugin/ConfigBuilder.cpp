@@ -4,12 +4,17 @@
 #include <sys/stat.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <functional>
 #include <set>
+#include <sstream>
 
 #include <Eigen/LU>
 
 #include "plugin/ConfigReferences.h"
+#include "plugin/SceneLinearEvidence.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
@@ -24,6 +29,7 @@ namespace
 
 constexpr const char* kBandSpaceName = "Bands VB-VG-VR (lecture)";
 constexpr const char* kFamilyLooks = "bandlight";
+constexpr const char* kLutFolder = "luts";
 
 /// Matrix from linear RGB space `src` to `dst`, adapting the white with
 /// Bradford when the two whites differ (as the ACES and Blender configs do).
@@ -92,9 +98,31 @@ OCIO::TransformRcPtr SceneLinearToReference(const OCIO::ConstColorSpaceRcPtr& sc
     return nullptr;  // scene_linear is the reference itself
 }
 
-void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observer,
+/// An OCIO v1 config cannot hold bandlight's guard (a v2 RangeTransform)
+/// inline, nor named transforms: its additions are CLF files the package
+/// carries, referenced by FileTransforms (which OCIO reads whatever the
+/// config's version), so the base keeps its v1 meaning exactly.
+bool IsV1(const OCIO::Config& config)
+{
+    return config.getMajorVersion() < 2;
+}
+
+/// `t` as a FileTransform of a CLF file the package carries (luts/<name>.clf).
+OCIO::TransformRcPtr AsLutFile(ConfigPackage& package, const std::string& name,
+                               const OCIO::GroupTransformRcPtr& t)
+{
+    const std::string file = SafeName(name) + ".clf";
+    package.lutFiles.emplace_back(std::string(kLutFolder) + "/" + file, t);
+    OCIO::FileTransformRcPtr f = OCIO::FileTransform::Create();
+    f->setSrc(file.c_str());
+    f->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+    return f;
+}
+
+void AddBandSpace(ConfigPackage& package, const RgbSpace& working, Observer observer,
                   OCIO::TransformRcPtr workingToReference)
 {
+    OCIO::Config& config = *package.config;
     const BandSet bands = BandSet::Lecture();
     OCIO::ColorSpaceRcPtr cs = SceneSpace(
         kBandSpaceName, "Bands",
@@ -104,7 +132,15 @@ void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observ
         "scene-linear");
     const Mat3 bandToWorking = BandToWorkingMatrix(bands, working, observer);
     OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
-    g->appendTransform(GuardedMatrixTransform(bandToWorking));
+    if (IsV1(config))
+    {
+        g->appendTransform(
+            AsLutFile(package, "bands_to_scene_linear", GuardedMatrixTransform(bandToWorking)));
+    }
+    else
+    {
+        g->appendTransform(GuardedMatrixTransform(bandToWorking));
+    }
     if (workingToReference)
     {
         g->appendTransform(workingToReference);
@@ -113,12 +149,11 @@ void AddBandSpace(OCIO::Config& config, const RgbSpace& working, Observer observ
     config.addColorSpace(cs);
 }
 
-constexpr const char* kLutFolder = "luts";
-
 void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& working,
               const std::string& processSpace)
 {
     OCIO::Config& config = *package.config;
+    const bool v1 = IsV1(config);
     std::vector<MethodSpec> methods;
     for (const std::string& m : o.methods)
     {
@@ -156,21 +191,16 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                 // A matrix inline; a non-linear method as a CLF file the
                 // package carries (configs cannot hold a 3D LUT inline).
                 OCIO::TransformRcPtr transform;
-                if (method.isLinear())
+                if (method.isLinear() && !v1)
                 {
                     transform = GuardedMatrixTransform(
                         IlluminantChangeMatrix(from, to, method, working, o.observer));
                 }
                 else
                 {
-                    const std::string file = name + ".clf";
-                    package.lutFiles.emplace_back(
-                        std::string(kLutFolder) + "/" + file,
-                        IlluminantChangeTransform(from, to, method, working, o.observer));
-                    OCIO::FileTransformRcPtr f = OCIO::FileTransform::Create();
-                    f->setSrc(file.c_str());
-                    f->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-                    transform = f;
+                    transform =
+                        AsLutFile(package, name,
+                                  IlluminantChangeTransform(from, to, method, working, o.observer));
                 }
                 OCIO::LookRcPtr look = OCIO::Look::Create();
                 look->setName(name.c_str());
@@ -178,6 +208,10 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                 look->setTransform(transform);
                 look->setDescription(description.c_str());
                 config.addLook(look);
+                if (v1)
+                {
+                    continue;  // named transforms are OCIO v2
+                }
 
                 // The same as a named transform (OCIO keeps look and named-transform
                 // names apart, hence the prefix); it applies to the image as it is,
@@ -305,7 +339,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
     data->setIsData(true);
     config->addColorSpace(data);
 
-    AddBandSpace(*config, working, o.observer, nullptr);
+    AddBandSpace(package, working, o.observer, nullptr);
 
     // clang-format off
     const std::pair<const char*, std::string> roles[] = {
@@ -347,6 +381,236 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
     return package;
 }
 
+namespace
+{
+
+/// `text` as a YAML double-quoted scalar.
+std::string YamlQuoted(const std::string& text)
+{
+    std::string out = "\"";
+    for (const char c : text)
+    {
+        if (c == '"' || c == '\\')
+        {
+            out += '\\';
+            out += c;
+        }
+        else if (static_cast<unsigned char>(c) < 0x20)
+        {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02X", unsigned(static_cast<unsigned char>(c)));
+            out += buf;
+        }
+        else
+        {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string Serialized(const OCIO::ConstConfigRcPtr& config)
+{
+    return SerializeConfig(config);
+}
+
+/// A copy of `base` that OCIO 2.1 would serialise to the same text.
+/// Config::createEditableCopy drops default_view_transform (every display
+/// conversion of an ACES studio config changes with it), so it is restored;
+/// any other difference is refused rather than written.
+OCIO::ConfigRcPtr EditableCopy(const OCIO::ConstConfigRcPtr& base)
+{
+    OCIO::ConfigRcPtr copy = base->createEditableCopy();
+    copy->setDefaultViewTransformName(base->getDefaultViewTransformName());
+    return copy;
+}
+
+OCIO::ConfigRcPtr FaithfulCopy(const OCIO::ConstConfigRcPtr& base)
+{
+    OCIO::ConfigRcPtr copy = EditableCopy(base);
+    const std::string a = Serialized(base);
+    const std::string b = Serialized(copy);
+    if (a != b)
+    {
+        size_t line = 1, i = 0;
+        for (; i < std::min(a.size(), b.size()) && a[i] == b[i]; ++i)
+        {
+            line += a[i] == '\n' ? 1 : 0;
+        }
+        const size_t start = a.rfind('\n', i == 0 ? 0 : i - 1);
+        const size_t end = a.find('\n', i);
+        const std::string text = a.substr(start == std::string::npos ? 0 : start + 1,
+                                          (end == std::string::npos ? a.size() : end) -
+                                              (start == std::string::npos ? 0 : start + 1));
+        throw Exception("OpenColorIO loses part of the base config when copying it (line " +
+                        std::to_string(line) + " of its serialised form: '" + OneLine(text, 120) +
+                        "'): refusing to write a config that differs from the base");
+    }
+    return copy;
+}
+
+/// Every base transform a host can ask for, as (description, processor maker).
+std::vector<
+    std::pair<std::string, std::function<OCIO::ConstProcessorRcPtr(const OCIO::ConstConfigRcPtr&)>>>
+BaseTransforms(const OCIO::ConstConfigRcPtr& base)
+{
+    std::vector<std::pair<std::string,
+                          std::function<OCIO::ConstProcessorRcPtr(const OCIO::ConstConfigRcPtr&)>>>
+        out;
+    const char* sl = OCIO::ROLE_SCENE_LINEAR;
+    for (int i = 0;
+         i < base->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i)
+    {
+        const std::string cs = base->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
+                                                              OCIO::COLORSPACE_ALL, i);
+        out.push_back({"colour space '" + cs + "' to scene_linear",
+                       [cs, sl](const OCIO::ConstConfigRcPtr& c)
+                       { return c->getProcessor(cs.c_str(), sl); }});
+        out.push_back({"scene_linear to colour space '" + cs + "'",
+                       [cs, sl](const OCIO::ConstConfigRcPtr& c)
+                       { return c->getProcessor(sl, cs.c_str()); }});
+    }
+    for (int d = 0; d < base->getNumDisplaysAll(); ++d)
+    {
+        const std::string display = base->getDisplayAll(d);
+        for (int v = 0; v < base->getNumViews(OCIO::VIEW_DISPLAY_DEFINED, display.c_str()) +
+                                base->getNumViews(OCIO::VIEW_SHARED, display.c_str());
+             ++v)
+        {
+            const int defined = base->getNumViews(OCIO::VIEW_DISPLAY_DEFINED, display.c_str());
+            const std::string view =
+                v < defined ? base->getView(OCIO::VIEW_DISPLAY_DEFINED, display.c_str(), v)
+                            : base->getView(OCIO::VIEW_SHARED, display.c_str(), v - defined);
+            out.push_back({"display '" + display + "', view '" + view + "'",
+                           [display, view, sl](const OCIO::ConstConfigRcPtr& c)
+                           {
+                               OCIO::DisplayViewTransformRcPtr t =
+                                   OCIO::DisplayViewTransform::Create();
+                               t->setSrc(sl);
+                               t->setDisplay(display.c_str());
+                               t->setView(view.c_str());
+                               return c->getProcessor(t);
+                           }});
+        }
+    }
+    for (int i = 0; i < base->getNumLooks(); ++i)
+    {
+        const std::string look = base->getLookNameByIndex(i);
+        out.push_back({"look '" + look + "'", [look, sl](const OCIO::ConstConfigRcPtr& c)
+                       {
+                           OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+                           t->setSrc(sl);
+                           t->setDst(sl);
+                           t->setLooks(look.c_str());
+                           return c->getProcessor(t);
+                       }});
+    }
+    for (int i = 0; i < base->getNumNamedTransforms(OCIO::NAMEDTRANSFORM_ALL); ++i)
+    {
+        const std::string nt = base->getNamedTransformNameByIndex(OCIO::NAMEDTRANSFORM_ALL, i);
+        out.push_back({"named transform '" + nt + "'", [nt](const OCIO::ConstConfigRcPtr& c)
+                       {
+                           OCIO::ConstNamedTransformRcPtr t = c->getNamedTransform(nt.c_str());
+                           OCIO::ConstTransformRcPtr fwd =
+                               t->getTransform(OCIO::TRANSFORM_DIR_FORWARD);
+                           return c->getProcessor(
+                               fwd ? fwd : t->getTransform(OCIO::TRANSFORM_DIR_INVERSE),
+                               fwd ? OCIO::TRANSFORM_DIR_FORWARD : OCIO::TRANSFORM_DIR_INVERSE);
+                       }});
+    }
+    return out;
+}
+
+/// Checks that every transform of the base gives the same pixels in the
+/// extended config (its search paths rewritten, its LUT folder added) (16 colours from -0.1 to 16,
+/// 1e-5 relative): the extension only adds. Transforms the base itself cannot build (a missing
+/// file, a context variable, a singular inverse) are skipped; the extended
+/// config must then fail the same way.
+void VerifyBaseUnchanged(const OCIO::ConstConfigRcPtr& base, const OCIO::ConstConfigRcPtr& ext)
+{
+    static const float probe[16][3] = {{0, 0, 0},
+                                       {0.18f, 0.18f, 0.18f},
+                                       {1, 1, 1},
+                                       {16, 16, 16},
+                                       {1, 0, 0},
+                                       {0, 1, 0},
+                                       {0, 0, 1},
+                                       {0.5f, 0.2f, 0.05f},
+                                       {0.05f, 0.3f, 0.7f},
+                                       {-0.1f, 0.2f, 0.4f},
+                                       {0.01f, 0.01f, 0.02f},
+                                       {4, 2, 1},
+                                       {0.9f, 0.9f, 0.1f},
+                                       {0.3f, 0.6f, 0.9f},
+                                       {2e-3f, 5e-3f, 1e-3f},
+                                       {0.7f, 0.1f, 0.8f}};
+    for (const auto& [what, make] : BaseTransforms(base))
+    {
+        OCIO::ConstCPUProcessorRcPtr a;
+        try
+        {
+            a = make(base)->getDefaultCPUProcessor();
+        }
+        catch (const OCIO::Exception&)
+        {
+            continue;
+        }
+        OCIO::ConstCPUProcessorRcPtr b;
+        try
+        {
+            b = make(ext)->getDefaultCPUProcessor();
+        }
+        catch (const OCIO::Exception& e)
+        {
+            throw Exception("extending the base config would break its " + what + " (" +
+                            OneLine(e.what(), 200) + ")");
+        }
+        for (const auto& p : probe)
+        {
+            float x[3] = {p[0], p[1], p[2]}, y[3] = {p[0], p[1], p[2]};
+            a->applyRGB(x);
+            b->applyRGB(y);
+            for (int c = 0; c < 3; ++c)
+            {
+                // 1e-5: OCIO writes a config's numbers with fewer digits than
+                // some files give them (Blender's False Color view changes by
+                // 4e-6 when OCIO merely re-serialises Blender's own config).
+                const bool same = (std::isnan(x[c]) && std::isnan(y[c])) || x[c] == y[c] ||
+                                  std::abs(x[c] - y[c]) <= 1e-5f * std::max(1.0f, std::abs(x[c]));
+                if (!same)
+                {
+                    char values[160];
+                    std::snprintf(values, sizeof values,
+                                  "(%g, %g, %g) gives %.9g in channel %d instead of %.9g", p[0],
+                                  p[1], p[2], double(y[c]), c, double(x[c]));
+                    throw Exception("extending the base config would change its " + what + ": " +
+                                    values + "; refusing to write it");
+                }
+            }
+        }
+    }
+}
+
+/// A base search path as seen from the extended config's folder.
+std::string Relocated(const std::string& path, const std::string& baseDir, const ConfigOptions& o)
+{
+    if (path.empty() || path[0] == '/' || path[0] == '$' || baseDir.empty())
+    {
+        return path;  // absolute, or resolved by a context variable
+    }
+    namespace fs = std::filesystem;
+    const fs::path target = fs::weakly_canonical(fs::path(baseDir) / path);
+    if (o.absoluteBasePaths || o.outputDir.empty())
+    {
+        return target.string();
+    }
+    const fs::path from = fs::weakly_canonical(fs::absolute(o.outputDir));
+    const fs::path rel = target.lexically_relative(from);
+    return rel.empty() ? target.string() : rel.string();
+}
+
+}  // namespace
+
 ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, bool detect,
                            std::string* identifiedSpace)
 {
@@ -358,43 +622,12 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
         throw Exception("the base config has no scene_linear role: looks need a process space");
     }
     const std::string processSpace = sceneLinear->getName();
+    std::string evidence;
     if (detect)
     {
-        // Measure scene_linear against an interchange space and find which
-        // built-in primaries (with the usual white adaptations) it matches.
-        const char* interchange =
-            base->getColorSpace(OCIO::ROLE_INTERCHANGE_DISPLAY) ? OCIO::ROLE_INTERCHANGE_DISPLAY
-            : base->getColorSpace(OCIO::ROLE_INTERCHANGE_SCENE) ? OCIO::ROLE_INTERCHANGE_SCENE
-                                                                : nullptr;
-        if (!interchange)
-        {
-            throw Exception("cannot tell the primaries of the base config's scene_linear space '" +
-                            processSpace +
-                            "' (no cie_xyz_d65_interchange or aces_interchange role): give "
-                            "--working-space");
-        }
-        const Mat3 measured =
-            MeasureMatrix(base->getProcessor(OCIO::ROLE_SCENE_LINEAR, interchange));
-        const bool toXyz = std::string(interchange) == OCIO::ROLE_INTERCHANGE_DISPLAY;
-        const RgbSpace* found = nullptr;
-        for (const RgbSpace& s : BuiltinRgbSpaces())
-        {
-            const Mat3 expected =
-                toXyz ? SpaceToXyzD65(s) : SpaceToSpace(s, FindRgbSpace("aces2065-1"));
-            // Configs adapt whites with Bradford or CAT02 and round their
-            // matrices: 2e-3 tells the primaries sets apart with a wide margin.
-            if ((measured - expected).cwiseAbs().maxCoeff() < 2e-3)
-            {
-                found = &s;
-                break;
-            }
-        }
-        if (!found)
-        {
-            throw Exception("the base config's scene_linear space '" + processSpace +
-                            "' matches none of the built-in primaries: give --working-space");
-        }
-        o.workingSpace = found->name;
+        const SceneLinearIdentity id = IdentifySceneLinear(base);
+        o.workingSpace = id.space->name;
+        evidence = id.evidence;
     }
     const RgbSpace& working = FindRgbSpace(o.workingSpace);
     if (identifiedSpace)
@@ -403,22 +636,25 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
     }
 
     ConfigPackage package;
-    package.config = base->createEditableCopy();
+    package.evidence = evidence;
+    package.config = FaithfulCopy(base);
     OCIO::ConfigRcPtr& config = package.config;
-    // The extended config is written elsewhere: anchor the base's relative
-    // search paths (its LUT folders) at the base's own directory.
+    // An OCIO v1 base stays v1: OCIO 2.1 evaluates some v1 transforms
+    // differently in a v2 config (a CDL look on negative values changes by
+    // 0.03), so upgrading would change the base's pixels. The additions are
+    // CLF files instead (see AddLooks).
+    package.v1 = IsV1(*config);
+    // The extended config is written elsewhere: the base's relative search
+    // paths (its LUT folders) are rewritten to reach the base's folder from
+    // there — relative to the output folder by default, so the two trees
+    // move together.
     const std::string baseDir = base->getWorkingDir();
-    if (!baseDir.empty())
+    if (!baseDir.empty() && base->getNumSearchPaths() > 0)
     {
         std::vector<std::string> paths;
         for (int i = 0; i < base->getNumSearchPaths(); ++i)
         {
-            std::string p = base->getSearchPath(i);
-            if (!p.empty() && p[0] != '/' && p[0] != '$')
-            {
-                p = baseDir + "/" + p;
-            }
-            paths.push_back(p);
+            paths.push_back(Relocated(base->getSearchPath(i), baseDir, o));
         }
         config->clearSearchPaths();
         for (const std::string& p : paths)
@@ -426,9 +662,13 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
             config->addSearchPath(p.c_str());
         }
     }
+    if (!o.outputDir.empty())
+    {
+        config->setWorkingDir(o.outputDir.c_str());
+    }
     if (!config->getColorSpace(kBandSpaceName))  // a bandlight config has it already
     {
-        AddBandSpace(*config, working, o.observer, SceneLinearToReference(sceneLinear));
+        AddBandSpace(package, working, o.observer, SceneLinearToReference(sceneLinear));
     }
     AddLooks(package, o, working, processSpace);
     if (!package.lutFiles.empty())
@@ -436,16 +676,52 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
         config->addSearchPath(kLutFolder);
     }
     config->validate();
+    // The check runs on the config as it will be read back from its file
+    // (serialisation may lose what the in-memory copy still has); base
+    // transforms never touch bandlight's LUT files, so it can run before
+    // they are written.
+    std::istringstream text(SerializeConfig(config));
+    OCIO::ConfigRcPtr reread = EditableCopy(OCIO::Config::CreateFromStream(text));
+    reread->setWorkingDir(config->getWorkingDir());
+    VerifyBaseUnchanged(base, reread);
     return package;
+}
+
+std::string SerializeConfig(const OCIO::ConstConfigRcPtr& config)
+{
+    std::ostringstream out;
+    config->serialize(out);
+    std::string text = out.str();
+    // OCIO 2.1 writes no `environment:` section for a v1 config, though v1
+    // has one and its context variables (a show's $SEQ/$SHOT defaults) are
+    // what its search paths and looks resolve: put it back after the
+    // version line, where OCIO writes it for v2.
+    if (config->getMajorVersion() < 2 && config->getNumEnvironmentVars() > 0 &&
+        text.find("\nenvironment:") == std::string::npos)
+    {
+        std::string env = "\nenvironment:\n";
+        for (int i = 0; i < config->getNumEnvironmentVars(); ++i)
+        {
+            const char* name = config->getEnvironmentVarNameByIndex(i);
+            env += "  " + YamlQuoted(name) + ": " +
+                   YamlQuoted(config->getEnvironmentVarDefault(name)) + "\n";
+        }
+        const size_t eol = text.find('\n');
+        text.insert(eol == std::string::npos ? text.size() : eol + 1, env);
+    }
+    return text;
 }
 
 void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, OutputSet* outputs)
 {
     auto makeDir = [](const std::string& d)
     {
-        if (::mkdir(d.c_str(), 0777) != 0 && errno != EEXIST)
+        std::error_code ec;
+        std::filesystem::create_directories(d, ec);
+        if (ec || !std::filesystem::is_directory(d))
         {
-            throw Exception(d + ": cannot create the directory (" + std::strerror(errno) + ")");
+            throw Exception(d + ": cannot create the directory (" +
+                            (ec ? ec.message() : std::string("a file is in the way")) + ")");
         }
     };
     makeDir(dir);
@@ -464,7 +740,8 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, Ou
         set.write(dir + "/" + lut.first, [&](std::ostream& os)
                   { transform->write(raw, "Academy/ASC Common LUT Format", os); });
     }
-    set.write(dir + "/config.ocio", [&](std::ostream& os) { package.config->serialize(os); });
+    const std::string text = SerializeConfig(package.config);
+    set.write(dir + "/config.ocio", [&](std::ostream& os) { os << text; });
     own.commit();
 }
 

@@ -21,6 +21,12 @@ struct ConfigOptions
     std::vector<Light> lights;
     std::vector<std::string> methods;
     Observer observer = Observer::CIE1931_2DEG;
+    /// Where the config will be written (ExtendConfig: the base's relative
+    /// search paths are rewritten to reach the base's folder from here).
+    std::string outputDir;
+    /// ExtendConfig: rewrite the base's relative search paths as absolute
+    /// paths instead of paths relative to outputDir.
+    bool absoluteBasePaths = false;
 };
 
 /// A config with the LUT files its non-linear looks reference (paths
@@ -29,6 +35,8 @@ struct ConfigPackage
 {
     OCIO::ConfigRcPtr config;
     std::vector<std::pair<std::string, OCIO::GroupTransformRcPtr>> lutFiles;
+    std::string evidence;  ///< ExtendConfig: what identified scene_linear's primaries
+    bool v1 = false;       ///< ExtendConfig: the base (and so the result) is an OCIO v1 config
 };
 
 /// The lecture's five illuminants: A, C, D65, F2, F11.
@@ -45,14 +53,31 @@ std::vector<Light> LectureLights();
 ConfigPackage BuildConfig(const ConfigOptions& options);
 
 /// Adds the same looks, named transforms and band space to a copy of an
-/// existing config, leaving everything it had intact. The looks' process
-/// space is the base's scene_linear role; its primaries are identified by
-/// measuring it against the base's cie_xyz_d65_interchange or
-/// aces_interchange space unless `options.workingSpace` is given explicitly
-/// (`detect` false). Throws Exception when the space cannot be identified
-/// or a new name clashes with one the base already has.
+/// existing config, leaving everything it had intact:
+/// - the copy serialises to exactly the base's text (OpenColorIO 2.1's own
+///   copy loses default_view_transform, which is restored; any other loss is
+///   refused), before the additions;
+/// - an OCIO v1 base stays v1 (OCIO 2.1 evaluates some v1 transforms
+///   differently in a v2 config): the looks and the band space are CLF
+///   files in luts/ referenced by FileTransforms, and there are no named
+///   transforms (a v2 feature);
+/// - every base colour space (both directions to scene_linear), display and
+///   view, look and named transform is checked to give the same pixels in
+///   the result;
+/// - relative search paths are rewritten to reach the base's folder from
+///   `options.outputDir` (relative, so the two trees move together; or
+///   absolute with `options.absoluteBasePaths`).
+/// The looks' process space is the base's scene_linear role. Its primaries
+/// are identified by IdentifySceneLinear (interchange roles, or standard
+/// colour spaces of the config, measured) unless `detect` is false and
+/// `options.workingSpace` names them. Throws Exception when the space cannot
+/// be identified, a new name clashes with the base, or the base would change.
 ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions options, bool detect,
                            std::string* identifiedSpace = nullptr);
+
+/// The config as text: OCIO's serialisation, with what OCIO 2.1 leaves out
+/// of a v1 config (its `environment:` section) put back.
+std::string SerializeConfig(const OCIO::ConstConfigRcPtr& config);
 
 /// Writes the package as DIR/config.ocio plus its LUT files (creating the
 /// folders), as one set of outputs: all files are replaced together once

@@ -14,10 +14,10 @@ namespace bandlight
 namespace OCIO = OCIO_NAMESPACE;
 
 /// The bound of the clamp in front of every matrix bandlight emits: finite
-/// values up to ±1e30 pass unchanged; ±Inf become ±1e30, so a matrix never
+/// values up to ±1e16 pass unchanged; ±Inf become ±1e16, so a matrix never
 /// computes Inf − Inf or 0 · Inf and never turns an infinite pixel into NaN.
 /// A NaN channel cannot pass an OpenColorIO clamp: OCIO maps it to the
-/// lower bound, so it enters the matrix as −1e30 (the pixel comes out hugely
+/// lower bound, so it enters the matrix as −1e16 (the pixel comes out hugely
 /// negative and displays black). docs/robustness.md tabulates every case.
 constexpr double INFINITY_GUARD = PIXEL_GUARD;
 

@@ -11,6 +11,9 @@ packages=(
   libbenchmark-dev gnuplot-nox
   colord-data argyll-ref argyll
   clang libclang-rt-14-dev
+  glslang-tools libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
+  python3 python3-pyopencolorio
+  blender
 )
 
 missing=()

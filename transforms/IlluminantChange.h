@@ -91,13 +91,17 @@ struct Light
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
                             const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
 
-/// The bound every pixel path clamps its input to: ±Inf become ±1e30 and
-/// NaN −1e30 before a matrix, so no matrix computes Inf − Inf and every
-/// result is finite (at most ‖M‖·1e30). The OCIO transforms do the same
+/// The bound every pixel path clamps its input to: ±Inf become ±1e16 and
+/// NaN −1e16 before a matrix, so no matrix computes Inf − Inf and every
+/// result is finite (at most ‖M‖·1e16). The OCIO transforms do the same
 /// with a RangeTransform (OCIO's clamp sends NaN to its lower bound); finite
-/// pixels below the bound pass unchanged. docs/robustness.md tabulates the
-/// cases.
-constexpr double PIXEL_GUARD = 1e30;
+/// pixels below the bound pass unchanged. Why 1e16: OCIO 2.1 writes a
+/// RangeTransform's bounds into GPU shaders as "%.17g" plus "." for whole
+/// numbers, which is a valid literal only below 1e17 ("1e+30." is a syntax
+/// error in every shading language); 1e16 prints as "10000000000000000."
+/// and also lies inside GLSL ES's guaranteed highp range (2^62).
+/// docs/robustness.md tabulates the cases.
+constexpr double PIXEL_GUARD = 1e16;
 
 /// A pixel as the guard sees it: each channel clamped to ±PIXEL_GUARD, NaN
 /// to −PIXEL_GUARD.

@@ -1,0 +1,806 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "gpu/GpuRunner.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+namespace bandlight::test
+{
+
+namespace
+{
+
+bool IsEs(OCIO::GpuLanguage language)
+{
+    return language == OCIO::GPU_LANGUAGE_GLSL_ES_1_0 || language == OCIO::GPU_LANGUAGE_GLSL_ES_3_0;
+}
+
+// ---------------------------------------------------------------------------
+// Shader wrappers. The ES headers need their precision lines: sampler3D has
+// no default precision, and without highp sampler2D llvmpipe samples the
+// float LUT textures at low precision. ES 1.0 reaches 3D textures through
+// GL_OES_texture_3D.
+
+struct Wrapper
+{
+    std::string vertex;  ///< the whole vertex shader ("" for languages not run)
+    std::string head;    ///< fragment shader text before OCIO's
+    std::string tail;    ///< after OCIO's: the input texture and main()
+};
+
+/// The vertex shader: a triangle covering the viewport, one attribute "pos".
+std::string VertexShader(const std::string& version, const char* in)
+{
+    return version + std::string(in) +
+           " vec2 pos;\nvoid main()\n{\n    gl_Position = vec4(pos, 0.0, 1.0);\n}\n";
+}
+
+// clang-format off
+const char* const kFetchTail =
+    "uniform sampler2D img;\n"
+    "out vec4 fragColor;\n"
+    "void main()\n"
+    "{\n"
+    "    fragColor = OCIOMain(texelFetch(img, ivec2(gl_FragCoord.xy), 0));\n"
+    "}\n";
+// GLSL 1.2 and ES 1.0 have no texelFetch: sample the texel centre (NEAREST).
+const char* const kSampleTail =
+    "uniform sampler2D img;\n"
+    "uniform vec2 imgSize;\n"
+    "void main()\n"
+    "{\n"
+    "    gl_FragColor = OCIOMain(texture2D(img, gl_FragCoord.xy / imgSize));\n"
+    "}\n";
+const char* const kHlslTail =
+    "Texture2D img;\n"
+    "float4 main(float4 pos : SV_Position) : SV_Target\n"
+    "{\n"
+    "    return OCIOMain(img.Load(int3(pos.xy, 0)));\n"
+    "}\n";
+const char* const kEsPrecision =
+    "precision highp float;\n"
+    "precision highp int;\n"
+    "precision highp sampler2D;\n"
+    "precision highp sampler3D;\n";
+// clang-format on
+
+Wrapper WrapperFor(OCIO::GpuLanguage language)
+{
+    switch (language)
+    {
+        case OCIO::GPU_LANGUAGE_GLSL_1_2:
+            return {VertexShader("#version 120\n", "attribute"), "#version 120\n", kSampleTail};
+        case OCIO::GPU_LANGUAGE_GLSL_1_3:
+            return {VertexShader("#version 130\n", "in"), "#version 130\n", kFetchTail};
+        case OCIO::GPU_LANGUAGE_GLSL_4_0:
+            return {VertexShader("#version 400 core\n", "in"), "#version 400 core\n", kFetchTail};
+        case OCIO::GPU_LANGUAGE_GLSL_ES_1_0:
+            return {
+                VertexShader("#version 100\n", "attribute"),
+                std::string("#version 100\n#extension GL_OES_texture_3D : enable\n") + kEsPrecision,
+                kSampleTail};
+        case OCIO::GPU_LANGUAGE_GLSL_ES_3_0:
+            return {VertexShader("#version 300 es\n", "in"),
+                    std::string("#version 300 es\n") + kEsPrecision, kFetchTail};
+        case OCIO::GPU_LANGUAGE_HLSL_DX11:
+            return {"", "", kHlslTail};
+        default:
+            return {"", "", ""};  // Cg, MSL, OSL: OCIO's text alone
+    }
+}
+
+// ---------------------------------------------------------------------------
+// EGL and GL state.
+
+std::string GlErrorText(GLenum e)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "GL error 0x%04x", unsigned(e));
+    return buf;
+}
+
+void CheckGl(const char* where)
+{
+    const GLenum e = glGetError();
+    if (e != GL_NO_ERROR)
+    {
+        throw std::runtime_error(GlErrorText(e) + " at " + where);
+    }
+}
+
+/// One EGL context (desktop OpenGL or OpenGL ES) and what it keeps between runs.
+struct Context
+{
+    EGLContext context = EGL_NO_CONTEXT;
+    std::string why;  ///< why there is no context
+    std::string renderer;
+    GLuint vao = 0, vbo = 0, input = 0, fbo = 0, target = 0;
+    int width = 0, height = 0;               ///< of the render target
+    std::map<std::string, GLuint> programs;  ///< by fragment shader text
+};
+
+/// The EGL display and both contexts. Created once, never destroyed: GL
+/// calls in static destructors would race Mesa's own clean-up at exit.
+struct Gpu
+{
+    EGLDisplay display = EGL_NO_DISPLAY;
+    std::string why;  ///< why there is no display
+    Context desktop, es;
+    bool triedDesktop = false, triedEs = false;
+    const Context* current = nullptr;
+};
+
+Gpu& TheGpu()
+{
+    static Gpu* gpu = []
+    {
+        Gpu* g = new Gpu();
+        // Surfaceless Mesa: no window system, no DISPLAY, no pbuffer; the
+        // contexts render into framebuffer objects only.
+        auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+            eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        if (!getPlatformDisplay)
+        {
+            g->why = "EGL has no eglGetPlatformDisplayEXT";
+            return g;
+        }
+        g->display =
+            getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        EGLint major = 0, minor = 0;
+        if (g->display == EGL_NO_DISPLAY || !eglInitialize(g->display, &major, &minor))
+        {
+            g->why =
+                "eglInitialize failed on EGL_PLATFORM_SURFACELESS_MESA (is libegl-mesa0 "
+                "installed?)";
+            g->display = EGL_NO_DISPLAY;
+        }
+        return g;
+    }();
+    return *gpu;
+}
+
+/// Sets up the context's triangle, input texture and framebuffer object.
+void PrepareContext(Context& c)
+{
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    c.renderer = std::string(renderer ? renderer : "?") + " | " + (version ? version : "?");
+    glGenVertexArrays(1, &c.vao);
+    glBindVertexArray(c.vao);
+    const float triangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
+    glGenBuffers(1, &c.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, c.vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof triangle, triangle, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glGenTextures(1, &c.input);
+    glGenTextures(1, &c.target);
+    glGenFramebuffers(1, &c.fbo);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    CheckGl("context set-up");
+}
+
+/// The context for `language`, current; nullptr (and `why`) if there is none.
+Context* ContextFor(OCIO::GpuLanguage language, std::string* why)
+{
+    Gpu& gpu = TheGpu();
+    if (gpu.display == EGL_NO_DISPLAY)
+    {
+        if (why)
+        {
+            *why = gpu.why;
+        }
+        return nullptr;
+    }
+    const bool es = IsEs(language);
+    Context& c = es ? gpu.es : gpu.desktop;
+    bool& tried = es ? gpu.triedEs : gpu.triedDesktop;
+    if (!tried)
+    {
+        tried = true;
+        // Desktop: a 4.5 compatibility profile, which compiles GLSL 1.20 and
+        // 1.30 as well as 4.00 (a core profile rejects the old versions).
+        // ES: 3.2, falling back to 3.0; it runs "#version 100" shaders too.
+        const EGLint desktop[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                  4,
+                                  EGL_CONTEXT_MINOR_VERSION,
+                                  5,
+                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                  EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                  EGL_NONE};
+        const EGLint es32[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2,
+                               EGL_NONE};
+        const EGLint es30[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0,
+                               EGL_NONE};
+        if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
+        {
+            c.why =
+                es ? "eglBindAPI(EGL_OPENGL_ES_API) failed" : "eglBindAPI(EGL_OPENGL_API) failed";
+        }
+        else
+        {
+            // EGL_KHR_no_config_context: no config is needed without a surface.
+            c.context = eglCreateContext(gpu.display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
+                                         es ? es32 : desktop);
+            if (c.context == EGL_NO_CONTEXT && es)
+            {
+                c.context = eglCreateContext(gpu.display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es30);
+            }
+            if (c.context == EGL_NO_CONTEXT)
+            {
+                char buf[128];
+                std::snprintf(buf, sizeof buf, "eglCreateContext (%s) failed: EGL error 0x%04x",
+                              es ? "OpenGL ES 3.x" : "OpenGL 4.5 compatibility",
+                              unsigned(eglGetError()));
+                c.why = buf;
+            }
+            else if (!eglMakeCurrent(gpu.display, EGL_NO_SURFACE, EGL_NO_SURFACE, c.context))
+            {
+                c.why = "eglMakeCurrent without a surface failed";
+                c.context = EGL_NO_CONTEXT;
+            }
+            else
+            {
+                gpu.current = &c;
+                PrepareContext(c);
+            }
+        }
+    }
+    if (c.context == EGL_NO_CONTEXT)
+    {
+        if (why)
+        {
+            *why = c.why;
+        }
+        return nullptr;
+    }
+    if (gpu.current != &c)
+    {
+        eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API);
+        if (!eglMakeCurrent(gpu.display, EGL_NO_SURFACE, EGL_NO_SURFACE, c.context))
+        {
+            throw std::runtime_error("eglMakeCurrent failed");
+        }
+        gpu.current = &c;
+    }
+    return &c;
+}
+
+GLuint CompileStage(GLenum stage, const std::string& text)
+{
+    const GLuint s = glCreateShader(stage);
+    const char* p = text.c_str();
+    glShaderSource(s, 1, &p, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok)
+    {
+        char log[8192] = {};
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        glDeleteShader(s);
+        throw std::runtime_error(std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                                 " shader does not compile on the GPU: " + log);
+    }
+    return s;
+}
+
+GLuint Program(Context& c, const Wrapper& w, const std::string& fragment)
+{
+    const auto found = c.programs.find(fragment);
+    if (found != c.programs.end())
+    {
+        return found->second;
+    }
+    const GLuint vs = CompileStage(GL_VERTEX_SHADER, w.vertex);
+    GLuint fs = 0;
+    try
+    {
+        fs = CompileStage(GL_FRAGMENT_SHADER, fragment);
+    }
+    catch (...)
+    {
+        glDeleteShader(vs);
+        throw;
+    }
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, vs);
+    glAttachShader(program, fs);
+    glBindAttribLocation(program, 0, "pos");
+    glLinkProgram(program);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok)
+    {
+        char log[8192] = {};
+        glGetProgramInfoLog(program, sizeof log, nullptr, log);
+        glDeleteProgram(program);
+        throw std::runtime_error(std::string("shader program does not link: ") + log);
+    }
+    c.programs.emplace(fragment, program);
+    return program;
+}
+
+void SetTextureParameters(GLenum target, GLint filter)
+{
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (target == GL_TEXTURE_3D)
+    {
+        glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    }
+}
+
+/// Binds OCIO's LUTs to texture units 1, 2, ... and points their samplers
+/// at them. Returns the texture names (to delete after the draw).
+std::vector<GLuint> UploadLuts(const OCIO::GpuShaderDesc& desc, GLuint program, bool es)
+{
+    std::vector<GLuint> textures;
+    GLint unit = 1;
+    auto bindSampler = [&](const char* sampler)
+    {
+        const GLint location = glGetUniformLocation(program, sampler);
+        if (location >= 0)
+        {
+            glUniform1i(location, unit);
+        }
+        ++unit;
+    };
+    for (unsigned i = 0; i < desc.getNum3DTextures(); ++i)
+    {
+        const char* textureName = nullptr;
+        const char* samplerName = nullptr;
+        unsigned edge = 0;
+        OCIO::Interpolation interpolation = OCIO::INTERP_UNKNOWN;
+        desc.get3DTexture(i, textureName, samplerName, edge, interpolation);
+        const float* values = nullptr;
+        desc.get3DTextureValues(i, values);
+        GLuint t = 0;
+        glGenTextures(1, &t);
+        textures.push_back(t);
+        glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+        glBindTexture(GL_TEXTURE_3D, t);
+        // OCIO's tetrahedral code fetches the nodes itself: no filtering.
+        SetTextureParameters(GL_TEXTURE_3D, interpolation == OCIO::INTERP_NEAREST ||
+                                                    interpolation == OCIO::INTERP_TETRAHEDRAL
+                                                ? GL_NEAREST
+                                                : GL_LINEAR);
+        // edge³ RGB nodes, red varying slowest (OCIO samples with .zyx).
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, GLsizei(edge), GLsizei(edge), GLsizei(edge), 0,
+                     GL_RGB, GL_FLOAT, values);
+        CheckGl("3D LUT upload");
+        bindSampler(samplerName);
+    }
+    for (unsigned i = 0; i < desc.getNumTextures(); ++i)
+    {
+        const char* textureName = nullptr;
+        const char* samplerName = nullptr;
+        unsigned width = 0, height = 0;
+        OCIO::GpuShaderDesc::TextureType channel = OCIO::GpuShaderDesc::TEXTURE_RGB_CHANNEL;
+        OCIO::Interpolation interpolation = OCIO::INTERP_UNKNOWN;
+        desc.getTexture(i, textureName, samplerName, width, height, channel, interpolation);
+        const float* values = nullptr;
+        desc.getTextureValues(i, values);
+        const bool red = channel == OCIO::GpuShaderDesc::TEXTURE_RED_CHANNEL;
+        // OCIO declares a one-row LUT as sampler1D in desktop GLSL, sampler2D
+        // in GLSL ES (which has no 1D textures); taller ones as sampler2D.
+        const GLenum target = height > 1 || es ? GL_TEXTURE_2D : GL_TEXTURE_1D;
+        GLuint t = 0;
+        glGenTextures(1, &t);
+        textures.push_back(t);
+        glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+        glBindTexture(target, t);
+        SetTextureParameters(target,
+                             interpolation == OCIO::INTERP_NEAREST ? GL_NEAREST : GL_LINEAR);
+        const GLenum internal = red ? GL_R32F : GL_RGB32F;
+        const GLenum format = red ? GL_RED : GL_RGB;
+        if (target == GL_TEXTURE_1D)
+        {
+            glTexImage1D(target, 0, GLint(internal), GLsizei(width), 0, format, GL_FLOAT, values);
+        }
+        else
+        {
+            glTexImage2D(target, 0, GLint(internal), GLsizei(width), GLsizei(height), 0, format,
+                         GL_FLOAT, values);
+        }
+        CheckGl("1D LUT upload");
+        bindSampler(samplerName);
+    }
+    return textures;
+}
+
+/// Dynamic properties (exposure, contrast, gamma, grading) as OCIO lists
+/// them. bandlight's transforms have none; set them for completeness.
+void SetUniforms(const OCIO::GpuShaderDesc& desc, GLuint program)
+{
+    for (unsigned i = 0; i < desc.getNumUniforms(); ++i)
+    {
+        OCIO::GpuShaderDesc::UniformData u;
+        const char* name = desc.getUniform(i, u);
+        const GLint location = glGetUniformLocation(program, name);
+        if (location < 0)
+        {
+            continue;
+        }
+        switch (u.m_type)
+        {
+            case OCIO::UNIFORM_DOUBLE:
+                glUniform1f(location, GLfloat(u.m_getDouble()));
+                break;
+            case OCIO::UNIFORM_BOOL:
+                glUniform1i(location, u.m_getBool() ? 1 : 0);
+                break;
+            case OCIO::UNIFORM_FLOAT3:
+            {
+                const OCIO::Float3& f = u.m_getFloat3();
+                glUniform3f(location, f[0], f[1], f[2]);
+                break;
+            }
+            case OCIO::UNIFORM_VECTOR_FLOAT:
+                glUniform1fv(location, GLsizei(u.m_vectorFloat.m_getSize()),
+                             u.m_vectorFloat.m_getVector());
+                break;
+            case OCIO::UNIFORM_VECTOR_INT:
+                glUniform1iv(location, GLsizei(u.m_vectorInt.m_getSize()),
+                             u.m_vectorInt.m_getVector());
+                break;
+            default:
+                throw std::runtime_error(std::string("uniform of unknown type: ") + name);
+        }
+    }
+    CheckGl("uniforms");
+}
+
+// ---------------------------------------------------------------------------
+// glslangValidator.
+
+#ifdef BANDLIGHT_GLSLANG_VALIDATOR
+constexpr const char* kValidator = BANDLIGHT_GLSLANG_VALIDATOR;
+#else
+constexpr const char* kValidator = "";
+#endif
+
+std::string Quoted(const std::string& text)
+{
+    std::string q = "'";
+    for (char ch : text)
+    {
+        q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    }
+    return q + "'";
+}
+
+/// A fresh folder under $TMPDIR, removed with its files when destroyed.
+class TempFolder
+{
+public:
+    TempFolder()
+    {
+        const char* tmp = std::getenv("TMPDIR");
+        std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/bandlight_gpu_XXXXXX";
+        if (!mkdtemp(pattern.data()))
+        {
+            throw std::runtime_error("cannot create a folder like " + pattern);
+        }
+        m_path = pattern;
+    }
+    ~TempFolder()
+    {
+        for (const std::string& f : m_files)
+        {
+            std::remove((m_path + "/" + f).c_str());
+        }
+        rmdir(m_path.c_str());
+    }
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+
+    const std::string& path() const { return m_path; }
+    /// Writes `text` as file `name` in the folder.
+    void write(const std::string& name, const std::string& text)
+    {
+        std::ofstream out(m_path + "/" + name, std::ios::binary);
+        out << text;
+        if (!out.flush())
+        {
+            throw std::runtime_error("cannot write " + m_path + "/" + name);
+        }
+        m_files.push_back(name);
+    }
+    /// Names a file the validator will write, for clean-up.
+    void adopt(const std::string& name) { m_files.push_back(name); }
+
+private:
+    std::string m_path;
+    std::vector<std::string> m_files;
+};
+
+/// Runs a shell command, returning its exit status and, in `output`,
+/// stdout and stderr together.
+int RunCommand(const std::string& command, std::string& output)
+{
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe)
+    {
+        throw std::runtime_error("cannot run " + command);
+    }
+    char buf[4096];
+    size_t n = 0;
+    output.clear();
+    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0)
+    {
+        output.append(buf, n);
+    }
+    const int status = pclose(pipe);
+    if (status == -1 || !WIFEXITED(status))
+    {
+        throw std::runtime_error("the validator did not finish: " + command);
+    }
+    return WEXITSTATUS(status);
+}
+
+/// Splits a multi-file glslangValidator report into one part per file: the
+/// validator prints each file's name on a line of its own, then its messages.
+std::vector<std::string> SplitReport(const std::string& report,
+                                     const std::vector<std::string>& names)
+{
+    std::map<std::string, size_t> index;
+    for (size_t i = 0; i < names.size(); ++i)
+    {
+        index[names[i]] = i;
+    }
+    std::vector<std::string> parts(names.size());
+    std::istringstream in(report);
+    std::string line;
+    size_t current = names.size();
+    while (std::getline(in, line))
+    {
+        const auto found = index.find(line);
+        if (found != index.end())
+        {
+            current = found->second;
+        }
+        else if (current < names.size() && !line.empty())
+        {
+            parts[current] += line + "\n";
+        }
+    }
+    return parts;
+}
+
+bool HasErrors(const std::string& messages)
+{
+    return messages.find("ERROR") != std::string::npos ||
+           messages.find("error") != std::string::npos;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+const char* GpuLanguageName(OCIO::GpuLanguage language)
+{
+    switch (language)
+    {
+        case OCIO::GPU_LANGUAGE_CG:
+            return "CG";
+        case OCIO::GPU_LANGUAGE_GLSL_1_2:
+            return "GLSL_1_2";
+        case OCIO::GPU_LANGUAGE_GLSL_1_3:
+            return "GLSL_1_3";
+        case OCIO::GPU_LANGUAGE_GLSL_4_0:
+            return "GLSL_4_0";
+        case OCIO::GPU_LANGUAGE_HLSL_DX11:
+            return "HLSL_DX11";
+        case OCIO::LANGUAGE_OSL_1:
+            return "OSL_1";
+        case OCIO::GPU_LANGUAGE_GLSL_ES_1_0:
+            return "GLSL_ES_1_0";
+        case OCIO::GPU_LANGUAGE_GLSL_ES_3_0:
+            return "GLSL_ES_3_0";
+        case OCIO::GPU_LANGUAGE_MSL_2_0:
+            return "MSL_2_0";
+    }
+    return "unknown";
+}
+
+bool IsRunnable(OCIO::GpuLanguage language)
+{
+    return !WrapperFor(language).vertex.empty();
+}
+
+bool IsValidated(OCIO::GpuLanguage language)
+{
+    return IsRunnable(language) || language == OCIO::GPU_LANGUAGE_HLSL_DX11;
+}
+
+GpuShader GpuRunner::Extract(const OCIO::ConstGPUProcessorRcPtr& processor,
+                             OCIO::GpuLanguage language)
+{
+    GpuShader s;
+    s.desc = OCIO::GpuShaderDesc::CreateShaderDesc();
+    s.desc->setLanguage(language);
+    s.desc->setFunctionName("OCIOMain");
+    s.desc->setPixelName("outColor");
+    s.desc->setResourcePrefix("ocio_");
+    processor->extractGpuShaderInfo(s.desc);
+    s.ocioText = s.desc->getShaderText();
+    const Wrapper w = WrapperFor(language);
+    s.fragmentText = w.head + s.ocioText + "\n" + w.tail;
+    return s;
+}
+
+bool GpuRunner::Available(OCIO::GpuLanguage language, std::string* why)
+{
+    if (!IsRunnable(language))
+    {
+        if (why)
+        {
+            *why = std::string(GpuLanguageName(language)) + " is not an OpenGL language";
+        }
+        return false;
+    }
+    return ContextFor(language, why) != nullptr;
+}
+
+std::string GpuRunner::Renderer(OCIO::GpuLanguage language)
+{
+    const Context* c = IsRunnable(language) ? ContextFor(language, nullptr) : nullptr;
+    return c ? c->renderer : std::string();
+}
+
+std::vector<float> GpuRunner::Run(const OCIO::ConstGPUProcessorRcPtr& processor,
+                                  OCIO::GpuLanguage language, const std::vector<float>& rgba,
+                                  int width, int height)
+{
+    if (width <= 0 || height <= 0 || rgba.size() != size_t(width) * size_t(height) * 4)
+    {
+        throw std::invalid_argument("GpuRunner::Run: rgba must hold width x height RGBA pixels");
+    }
+    std::string why;
+    Context* c = Available(language, &why) ? ContextFor(language, &why) : nullptr;
+    if (!c)
+    {
+        throw std::runtime_error("no GPU context for " + std::string(GpuLanguageName(language)) +
+                                 ": " + why);
+    }
+    const GpuShader shader = Extract(processor, language);
+    const GLuint program = Program(*c, WrapperFor(language), shader.fragmentText);
+    glUseProgram(program);
+
+    // The image on unit 0: RGBA32F, fetched texel by texel.
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, c->input);
+    SetTextureParameters(GL_TEXTURE_2D, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    CheckGl("input texture");
+    glUniform1i(glGetUniformLocation(program, "img"), 0);
+    const GLint size = glGetUniformLocation(program, "imgSize");
+    if (size >= 0)
+    {
+        glUniform2f(size, GLfloat(width), GLfloat(height));
+    }
+    const std::vector<GLuint> luts = UploadLuts(*shader.desc, program, IsEs(language));
+    SetUniforms(*shader.desc, program);
+
+    // An RGBA32F render target of the image's size.
+    glBindFramebuffer(GL_FRAMEBUFFER, c->fbo);
+    if (c->width != width || c->height != height)
+    {
+        glActiveTexture(GL_TEXTURE0 + GLenum(1 + luts.size()));
+        glBindTexture(GL_TEXTURE_2D, c->target);
+        SetTextureParameters(GL_TEXTURE_2D, GL_NEAREST);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c->target, 0);
+        c->width = width;
+        c->height = height;
+    }
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    {
+        throw std::runtime_error("the RGBA32F framebuffer is incomplete");
+    }
+    glViewport(0, 0, width, height);
+    glBindVertexArray(c->vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    CheckGl("draw");
+
+    std::vector<float> out(rgba.size());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out.data());
+    CheckGl("glReadPixels");
+    glDeleteTextures(GLsizei(luts.size()), luts.data());
+    return out;
+}
+
+bool GpuRunner::HasValidator()
+{
+    return *kValidator != '\0';
+}
+
+std::string GpuRunner::Compile(const std::string& shaderText, OCIO::GpuLanguage language)
+{
+    return Compile(std::vector<std::string>{shaderText}, language).front();
+}
+
+std::vector<std::string> GpuRunner::Compile(const std::vector<std::string>& shaderTexts,
+                                            OCIO::GpuLanguage language)
+{
+    if (!HasValidator())
+    {
+        throw std::logic_error("glslangValidator was not found when the tests were configured");
+    }
+    if (!IsValidated(language))
+    {
+        throw std::logic_error(std::string("no validator for ") + GpuLanguageName(language));
+    }
+    std::vector<std::string> results(shaderTexts.size());
+    TempFolder folder;
+    const std::string cd = "cd " + Quoted(folder.path()) + " && " + Quoted(kValidator);
+    if (language == OCIO::GPU_LANGUAGE_HLSL_DX11)
+    {
+        // HLSL must be translated to SPIR-V (-V), and the validator links
+        // every file of a run into one module: one run per shader.
+        folder.adopt("s.spv");
+        for (size_t i = 0; i < shaderTexts.size(); ++i)
+        {
+            folder.write("s.hlsl", shaderTexts[i]);
+            std::string report;
+            const int status = RunCommand(cd + " -D -V -e main -S frag -o s.spv s.hlsl", report);
+            results[i] = status == 0 ? std::string() : report;
+        }
+        return results;
+    }
+    constexpr size_t kBatch = 64;
+    for (size_t first = 0; first < shaderTexts.size(); first += kBatch)
+    {
+        std::vector<std::string> names;
+        std::string command = cd + " -S frag";
+        for (size_t i = first; i < std::min(shaderTexts.size(), first + kBatch); ++i)
+        {
+            names.push_back("s" + std::to_string(i) + ".frag");
+            folder.write(names.back(), shaderTexts[i]);
+            command += " " + names.back();
+        }
+        std::string report;
+        const int status = RunCommand(command, report);
+        const std::vector<std::string> parts = SplitReport(report, names);
+        bool attributed = false;
+        for (size_t k = 0; k < names.size(); ++k)
+        {
+            if (HasErrors(parts[k]))
+            {
+                results[first + k] = parts[k];
+                attributed = true;
+            }
+        }
+        if (status != 0 && !attributed)
+        {
+            // A failure the report does not pin on a file: say so for each.
+            for (size_t k = 0; k < names.size(); ++k)
+            {
+                results[first + k] = "glslangValidator failed: " + report;
+            }
+        }
+    }
+    return results;
+}
+
+}  // namespace bandlight::test
