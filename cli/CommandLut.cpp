@@ -78,9 +78,15 @@ void AddLutCommand(CLI::App& app)
     auto o = std::make_shared<LutCommandOptions>();
     CLI::App* cmd = app.add_subcommand("lut",
                                        "Write an illuminant change as a LUT file (CLF, CTF, cube, "
-                                       "spi3d, 3dl) through OpenColorIO's writers");
+                                       "spi3d, 3dl, resolve_cube, csp, houdini) through "
+                                       "OpenColorIO's writers");
     AddRelightOptions(*cmd, o->relight, true);
-    cmd->add_option("--format", o->format, "clf, ctf, cube, spi3d or 3dl")->capture_default_str();
+    cmd->add_option("--format", o->format,
+                    "clf, ctf, cube, spi3d, 3dl (scene-linear HDR through the shaper); "
+                    "resolve_cube, csp, houdini (display-referred [0, 1], with --shaper none). "
+                    "ICC is not offered: an ICC profile describes a device, not a scene-linear "
+                    "look")
+        ->capture_default_str();
     CLI::Option* size = cmd->add_option(
         "--size", o->size,
         "3D LUT size per axis; for CLF/CTF, giving it bakes a 3D LUT instead of the matrix");

@@ -157,7 +157,8 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
     CLI::Option* to =
         app.add_option("--to", o.to, "Illuminant it should look lit by (name or spectrum file)");
     app.add_option("--method", o.method,
-                   "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp")
+                   "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
+                   "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample")
         ->capture_default_str();
     app.add_option("--working-space", o.workingSpace,
                    "Linear working space of the image: acescg, aces2065-1, lin-rec709, rec2020, "

@@ -145,7 +145,20 @@ LutFormat ParseLutFormat(const std::string& text)
     {
         return LutFormat::THREE_DL;
     }
-    throw Exception("unknown LUT format '" + text + "' (clf, ctf, cube, spi3d, 3dl)");
+    if (t == "resolve_cube" || t == "resolve-cube")
+    {
+        return LutFormat::RESOLVE_CUBE;
+    }
+    if (t == "csp" || t == "cinespace")
+    {
+        return LutFormat::CINESPACE;
+    }
+    if (t == "houdini" || t == "lut")
+    {
+        return LutFormat::HOUDINI;
+    }
+    throw Exception("unknown LUT format '" + text +
+                    "' (clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini)");
 }
 
 const char* LutExtension(LutFormat format)
@@ -162,6 +175,12 @@ const char* LutExtension(LutFormat format)
             return "spi3d";
         case LutFormat::THREE_DL:
             return "3dl";
+        case LutFormat::RESOLVE_CUBE:
+            return "cube";
+        case LutFormat::CINESPACE:
+            return "csp";
+        case LutFormat::HOUDINI:
+            return "lut";
     }
     return "";
 }
@@ -293,6 +312,44 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
     {
         WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description, set);
+        own.commit();
+        return files;
+    }
+    if (o.format == LutFormat::RESOLVE_CUBE || o.format == LutFormat::CINESPACE ||
+        o.format == LutFormat::HOUDINI)
+    {
+        // OCIO 2.1's Baker samples these formats' 1D pre-LUT uniformly over
+        // the linear input range (resolve_cube, houdini: 4096 points 32 apart
+        // over -0.0005..131072, so everything below 32 shares one segment)
+        // or prints its input points with 6 decimals (cinespace: the points
+        // below 1e-3 collapse): a log shaper for scene-linear HDR cannot be
+        // carried. They are offered for display-referred [0, 1] data, where
+        // no pre-LUT is needed.
+        if (o.shaper.kind != ShaperSpec::Kind::NONE)
+        {
+            throw Exception(
+                path + ": " + LutExtension(o.format) +
+                " files carry their shaper as a 1D pre-LUT that OpenColorIO 2.1 samples too "
+                "coarsely for scene-linear HDR; use --shaper none for display-referred [0, 1] "
+                "data, or --format cube (or spi3d, 3dl) with its companion shaper CLF");
+        }
+        OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
+        lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+        SetLattice(*lut, BakeLattice(exact, o.shaper, o.size, false), o.size);
+        OCIO::BakerRcPtr baker = OCIO::Baker::Create();
+        baker->setConfig(BakerConfig(lut));
+        baker->setFormat(o.format == LutFormat::RESOLVE_CUBE ? "resolve_cube"
+                         : o.format == LutFormat::CINESPACE  ? "cinespace"
+                                                             : "houdini");
+        baker->setInputSpace("lut_in");
+        baker->setTargetSpace("lut_out");
+        baker->setCubeSize(o.size);
+        if (!o.description.empty())
+        {
+            baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
+                                                       o.description.c_str());
+        }
+        set.write(path, [&](std::ostream& os) { baker->bake(os); });
         own.commit();
         return files;
     }

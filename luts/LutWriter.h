@@ -21,9 +21,16 @@ enum class LutFormat
     CUBE,      ///< Iridas/Adobe .cube 3D LUT, through OCIO's Baker (iridas_cube)
     SPI3D,     ///< Sony Pictures Imageworks .spi3d (OCIO 2.1 has no writer; see WriteLut)
     THREE_DL,  ///< Autodesk Flame .3dl, through OCIO's Baker (flame): integer values
+    // Hosts' own formats, through OCIO's Baker, for display-referred [0, 1]
+    // data only (--shaper none): their 1D pre-LUT, as OCIO 2.1 bakes it,
+    // cannot carry a log shaper for scene-linear HDR (see WriteLut).
+    RESOLVE_CUBE,  ///< DaVinci Resolve .cube, Baker "resolve_cube"
+    CINESPACE,     ///< Rising Sun cinespace .csp, Baker "cinespace"
+    HOUDINI,       ///< SideFX Houdini .lut, Baker "houdini"
 };
 
-/// "clf", "ctf", "cube", "spi3d", "3dl" (case-insensitive); throws Exception otherwise.
+/// "clf", "ctf", "cube", "spi3d", "3dl", "resolve_cube", "csp" (or "cinespace"),
+/// "houdini" (case-insensitive); throws Exception otherwise.
 LutFormat ParseLutFormat(const std::string& text);
 const char* LutExtension(LutFormat format);
 

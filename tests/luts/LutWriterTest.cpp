@@ -167,6 +167,39 @@ TEST_CASE("cube, spi3d and 3dl load back through OCIO and match the lattice", "[
     }
 }
 
+TEST_CASE("Hosts' formats: resolve_cube, csp and houdini for [0, 1] data", "[luts]")
+{
+    const auto exact = Relight("A", "D65", "bradford");
+    const auto cpu = Cpu(exact);
+    ShaperSpec none;
+    none.kind = ShaperSpec::Kind::NONE;
+    // resolve_cube and csp print 6 decimals, houdini too: 33 points a side
+    // interpolate a 3x3 exactly inside the cube (tetrahedral), so only the
+    // printing is left. Values stay inside [0, 1] for the comparison.
+    for (const LutFormat f : {LutFormat::RESOLVE_CUBE, LutFormat::CINESPACE, LutFormat::HOUDINI})
+    {
+        const std::string path = Temp(std::string("hostlut.") + LutExtension(f));
+        LutOptions o;
+        o.format = f;
+        o.shaper = none;
+        const LutFiles files = WriteLut(exact, true, o, path);
+        REQUIRE(files.shaper.empty());
+        const auto loaded = Cpu(ReadLutFiles(files));
+        double worst = 0.0;
+        for (const Vec3& v : {Vec3(0.18, 0.18, 0.18), Vec3(0.5, 0.3, 0.2), Vec3(0.1, 0.4, 0.6),
+                              Vec3(0.02, 0.02, 0.05), Vec3(0.6, 0.55, 0.5)})
+        {
+            worst = std::max(worst, (Run(loaded, v) - Run(cpu, v)).cwiseAbs().maxCoeff());
+        }
+        INFO(LutExtension(f) << ": worst absolute error " << worst);
+        CHECK(worst < 2e-6);
+        // A log shaper cannot be carried by these files' pre-LUT: refused.
+        o.shaper = ShaperSpec();
+        CHECK_THROWS_WITH(WriteLut(exact, true, o, path),
+                          Contains("samples too coarsely for scene-linear HDR"));
+    }
+}
+
 TEST_CASE("The shaper's curve is continuous and invertible", "[luts]")
 {
     const ShaperSpec s;
