@@ -4,8 +4,8 @@
 //   build/bench/bench_scene
 #include <benchmark/benchmark.h>
 
+#include "render/SceneRenderer.h"
 #include "spectral/Illuminants.h"
-#include "transforms/SceneRenderer.h"
 
 using namespace bandlight;
 

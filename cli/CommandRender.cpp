@@ -12,14 +12,14 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/ImageApply.h"
-#include "cli/SceneFile.h"
 #include "plugin/ConfigBuilder.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 #include "transforms/Accuracy.h"
-#include "transforms/SceneRenderer.h"
 
 namespace bandlight::cli
 {
@@ -79,6 +79,29 @@ std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working
     return px;
 }
 
+/// What a render's EXR says about its pixels, in attributes that survive
+/// the file: OpenImageIO 2.4 keeps `oiio:ColorSpace` only in memory (its
+/// OpenEXR writer drops it and its reader says "Linear"), so the config's
+/// colour space name is also written as `bandlight:colorSpace`, and the
+/// Color Interop Forum's ID as `colorInteropID` (read by OpenImageIO 3.1+
+/// and Blender) — "data" for band values, which are not colours.
+void NameColourSpace(ImageDescription& d, const std::string& name, const std::string& space)
+{
+    static const std::pair<const char*, const char*> kInteropIds[] = {
+        {"acescg", "lin_ap1_scene"},    {"aces2065-1", "lin_ap0_scene"},
+        {"rec709", "lin_rec709_scene"}, {"rec2020", "lin_rec2020_scene"},
+        {"p3-d65", "lin_p3d65_scene"},  {"bands", "data"},
+    };
+    d.attributes.push_back({"bandlight:colorSpace", name});
+    for (const auto& [key, id] : kInteropIds)
+    {
+        if (space == key)
+        {
+            d.attributes.push_back({"colorInteropID", id});
+        }
+    }
+}
+
 /// Adds the render (and its sRGB preview) to `outputs`; returns what to
 /// report once the set is written.
 std::string Write(const RenderedImage& img, const std::string& out, const std::string& space,
@@ -91,6 +114,7 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
         d.colorSpace = "bands";
         d.attributes.push_back(
             {"bandlight:channels", "band values (radiometric), not RGB: " + bands.describe()});
+        NameColourSpace(d, "bands", "bands");
         WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
                    PixelType::FLOAT, &outputs);
         report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
@@ -98,8 +122,10 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
         return report.str();
     }
     const RgbSpace& rgb = FindRgbSpace(space);
+    ImageDescription linear = LinearImageDescription(rgb, ColorSpaceName(rgb));
+    NameColourSpace(linear, ColorSpaceName(rgb), rgb.name);
     WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
-               LinearImageDescription(rgb, ColorSpaceName(rgb)), PixelType::FLOAT, &outputs);
+               linear, PixelType::FLOAT, &outputs);
     report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
            << " channels, " << ColorSpaceName(rgb) << ")\n";
     const std::string png = Stem(out) + ".png";
@@ -117,22 +143,20 @@ void RunRender(const RenderOptions& o)
     Scene scene = ReadSceneFile(o.scene);
     if (!o.mode.empty())
     {
-        if (o.mode == "spectral")
+        if (ModeBandCount(o.mode) == 0 && scene.settings.output == "bands")
         {
-            scene.settings.mode = RenderSettings::Mode::SPECTRAL;
-            if (scene.settings.output == "bands")
-            {
-                scene.settings.output = "acescg";
-            }
+            // Band values exist only in band mode; switching the output to
+            // an RGB space behind the user's back would hide that.
+            throw Exception("--mode spectral: " + o.scene +
+                            " asks for output 'bands' (band values), which only band mode "
+                            "writes; set render: {output: acescg} (or another working space) to "
+                            "render it spectrally");
         }
-        else
-        {
-            scene.settings.mode = RenderSettings::Mode::BAND;
-            scene.settings.bands = ParseMethod(o.mode).bands;
-        }
+        SetRenderMode(scene.settings, o.mode);
     }
-    const ScenePlan plan = PlanScene(scene);
-    std::cout << ExplainPlan(scene, plan);
+    // --unplanned says what the literal path does, not what a plan would.
+    const ScenePlan plan = o.unplanned ? ScenePlan{} : PlanScene(scene);
+    std::cout << (o.unplanned ? ExplainUnplanned(scene) : ExplainPlan(scene, plan));
     if (o.explain)
     {
         return;
@@ -230,7 +254,8 @@ void AddRenderCommand(CLI::App& app)
     cmd->add_option("SCENE", o->scene, "Scene file (see docs/scenes.md)")->required();
     cmd->add_option("-o,--out", o->out, "Output EXR (default: SCENE.exr); an sRGB PNG goes beside");
     cmd->add_option("--mode", o->mode, "Override the scene's mode: band3, bandN or spectral");
-    cmd->add_flag("--explain", o->explain, "Print the plan and stop");
+    cmd->add_flag("--explain", o->explain,
+                  "Print the plan (with --unplanned: what the literal path does) and stop");
     cmd->add_flag("--compare", o->compare,
                   "Also render the spectral reference; write a ΔE00 heat map and a summary");
     cmd->add_flag("--unplanned", o->unplanned,

@@ -4,9 +4,11 @@
 
 #include <fstream>
 
+#include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
+#include "spectral/RgbSpaces.h"
 
 using bandlight::test::Bandlight;
 using bandlight::test::Result;
@@ -122,4 +124,113 @@ TEST_CASE("A good scene renders in every mode", "[cli][scene]")
         INFO(mode << ": " << r.err);
         CHECK(r.code == 0);
     }
+}
+
+TEST_CASE("A rendered EXR says what it holds: colour space and chromaticities", "[cli][scene]")
+{
+    // OpenImageIO 2.4 reads every EXR as oiio:ColorSpace "Linear", so the
+    // name travels as bandlight:colorSpace, with the Color Interop Forum ID.
+    struct Case
+    {
+        const char* output;
+        const char* colorSpace;
+        const char* interopId;
+        const char* space;  ///< its chromaticities; "" for band values
+    };
+    for (const Case& c : {Case{"acescg", "ACEScg", "lin_ap1_scene", "acescg"},
+                          Case{"lin-rec709", "Linear Rec.709 (sRGB)", "lin_rec709_scene", "rec709"},
+                          Case{"bands", "bands", "data", ""}})
+    {
+        INFO(c.output);
+        std::string yaml = kGood;
+        yaml.replace(yaml.find("{mode: band3}"), 13,
+                     std::string("{mode: band3, output: ") + c.output + "}");
+        const std::string scene = WriteScene(std::string("meta_") + c.output + ".yaml", yaml);
+        const std::string exr = Temp(std::string("meta_") + c.output + ".exr");
+        const Result r = Bandlight("render '" + scene + "' -o '" + exr + "'");
+        REQUIRE(r.code == 0);
+        auto in = OIIO::ImageInput::open(exr);
+        REQUIRE(in);
+        const OIIO::ImageSpec& spec = in->spec();
+        CHECK(spec.get_string_attribute("bandlight:colorSpace") == c.colorSpace);
+        CHECK(spec.get_string_attribute("colorInteropID") == c.interopId);
+        const OIIO::ParamValue* chroma = spec.find_attribute("chromaticities");
+        if (*c.space)
+        {
+            REQUIRE(chroma);
+            REQUIRE(chroma->type() == OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8));
+            const float* v = static_cast<const float*>(chroma->data());
+            const bandlight::Chromaticities& e = bandlight::FindRgbSpace(c.space).chromaticities;
+            const double expected[8] = {e.rx, e.ry, e.gx, e.gy, e.bx, e.by, e.wx, e.wy};
+            for (int i = 0; i < 8; ++i)
+            {
+                CHECK(v[i] == Approx(expected[i]).margin(1e-7));
+            }
+            CHECK(spec.nchannels == 3);
+        }
+        else
+        {
+            // Band values are not RGB: no chromaticities, and the file says so.
+            CHECK(chroma == nullptr);
+            CHECK(spec.get_string_attribute("bandlight:channels") ==
+                  "band values (radiometric), not RGB: 400,500,600,700");
+            CHECK(spec.channelnames == std::vector<std::string>{"VB", "VG", "VR"});
+        }
+    }
+}
+
+TEST_CASE("Band output with --mode spectral is refused, not switched", "[cli][scene]")
+{
+    std::string yaml = kGood;
+    yaml.replace(yaml.find("{mode: band3}"), 13, "{mode: band3, output: bands}");
+    const std::string scene = WriteScene("bands_spectral.yaml", yaml);
+    const std::string out = Temp("bands_spectral.exr");
+    std::remove(out.c_str());
+    const Result r = Bandlight("render '" + scene + "' --mode spectral -o '" + out + "'");
+    CHECK(r.code == 2);
+    CHECK(r.err == "bandlight: --mode spectral: " + scene +
+                       " asks for output 'bands' (band values), which only band mode writes; set "
+                       "render: {output: acescg} (or another working space) to render it "
+                       "spectrally\n");
+    CHECK_FALSE(Exists(out));
+    // Band modes are fine.
+    CHECK(Bandlight("render '" + scene + "' --mode band6 -o '" + out + "'").code == 0);
+}
+
+TEST_CASE("The literal path (--unplanned) prints what it does, not the plan", "[cli][scene]")
+{
+    std::string yaml = kGood;
+    yaml.replace(yaml.find("lights:\n"), 8,
+                 "lights:\n  - {type: directional, direction: [0, 1, -1], spectrum: D65}\n");
+    const std::string scene = WriteScene("unplanned.yaml", yaml);
+    const Result planned = Bandlight("render '" + scene + "' --explain");
+    CHECK(planned.code == 0);
+    CHECK_THAT(planned.out, Contains("light terms: 1 for 2 direct lights (lights sharing a "
+                                     "spectrum summed into one term)"));
+    const Result literal = Bandlight("render '" + scene + "' --unplanned --explain");
+    CHECK(literal.code == 0);
+    CHECK(literal.out ==
+          "unplanned: band mode, 16x12, output acescg (3 channels), the literal path: no plan\n"
+          "  per pixel, every light on its own: 2 direct lights (cos a, cos^n psi and f_att "
+          "evaluated for each, whatever the materials and lights), 0 ambient\n"
+          "  per light, per band: light x (R_amb, R_diff, R_spek, R_amb*) in 3 bands "
+          "(400,500,600,700 nm)\n"
+          "  then the band values are converted to acescg\n");
+    const Result run =
+        Bandlight("render '" + scene + "' --unplanned -o '" + Temp("unplanned.exr") + "'");
+    CHECK(run.code == 0);
+    CHECK_THAT(run.out, Contains("the literal path") && !Contains("summed"));
+}
+
+TEST_CASE("An orthographic scene renders from the command line", "[cli][scene]")
+{
+    std::string yaml = kGood;
+    yaml.replace(0, yaml.find('\n'),
+                 "camera: {type: orthographic, size: 2, position: [0, 0, 3], look_at: [0, 0, 0], "
+                 "width: 16, height: 12}");
+    const std::string scene = WriteScene("ortho.yaml", yaml);
+    const Result r = Bandlight("render '" + scene + "' -o '" + Temp("ortho.exr") + "'");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(Exists(Temp("ortho.exr")));
 }

@@ -2,8 +2,8 @@
 // Fuzzes the YAML scene reader, then plans and renders what it accepts at
 // 4×3 pixels, planned and literal: every accepted scene renders finite.
 #include "FuzzCheck.h"
-#include "cli/SceneFile.h"
-#include "transforms/SceneRenderer.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 
 using namespace bandlight;
 
@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     Scene scene;
     try
     {
-        scene = cli::ReadSceneText(fuzz::Text(data, size), source);
+        scene = ReadSceneText(fuzz::Text(data, size), source);
     }
     catch (const Exception& e)
     {

@@ -7,9 +7,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "cli/SceneFile.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 #include "spectral/Exception.h"
-#include "transforms/SceneRenderer.h"
 
 using namespace bandlight;
 
@@ -31,7 +31,7 @@ materials:
 objects:
   - {plane: {point: [0, 0, 0], normal: [0, 0, 1]}, material: m}
 )";
-    const Scene scene = cli::ReadSceneText(yaml, "edge.yaml");
+    const Scene scene = ReadSceneText(yaml, "edge.yaml");
     PlanOptions o;
     o.optimise = planned;
     return planned ? RenderScene(scene, PlanScene(scene, o), 1).pixels
@@ -47,7 +47,7 @@ std::string Message(const std::string& yaml)
 {
     try
     {
-        const Scene s = cli::ReadSceneText(yaml, "bad.yaml");
+        const Scene s = ReadSceneText(yaml, "bad.yaml");
         PlanScene(s);
     }
     catch (const Exception& e)
@@ -97,7 +97,7 @@ materials:
 objects:
   - {plane: {point: [0, 0, 0], normal: [1, 2, 3]}, material: m}
 )";
-    const Scene scene = cli::ReadSceneText(yaml, "tilted.yaml");
+    const Scene scene = ReadSceneText(yaml, "tilted.yaml");
     for (float v : RenderScene(scene, PlanScene(scene), 1).pixels)
     {
         CHECK(v <= 0.75f);
@@ -170,12 +170,12 @@ TEST_CASE("Degenerate geometry is refused with the file and line", "[robustness]
           "bad.yaml:3: material 'm': the Phong exponent must not be negative");
 
     // Through the API, without the reader: the planner refuses the same scenes.
-    Scene s = cli::ReadSceneText(lights, "ok.yaml");
+    Scene s = ReadSceneText(lights, "ok.yaml");
     s.camera.up = Vec3(0, 0, 5);
     s.camera.position = Vec3(0, 0, 1);
     CHECK_THROWS_WITH(PlanScene(s),
                       "the camera's up vector is zero or parallel to its view direction");
-    s = cli::ReadSceneText(lights, "ok.yaml");
+    s = ReadSceneText(lights, "ok.yaml");
     s.materials.push_back({});
     s.planes.push_back({Vec3::Zero(), Vec3::Zero(), 0});
     CHECK_THROWS_WITH(PlanScene(s), Catch::StartsWith("a plane needs a finite point and a unit normal"));

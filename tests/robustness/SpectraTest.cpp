@@ -9,7 +9,8 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "cli/SceneFile.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 #include "robustness/HardValues.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
@@ -17,7 +18,6 @@
 #include "spectral/SpectrumIO.h"
 #include "transforms/BandModel.h"
 #include "transforms/IlluminantChange.h"
-#include "transforms/SceneRenderer.h"
 
 using namespace bandlight;
 using namespace bandlight::test;
@@ -133,7 +133,7 @@ materials:
 objects:
   - {plane: {point: [0, 0, 0], normal: [0, 0, 1]}, material: card}
 )";
-        const Scene scene = cli::ReadSceneText(yaml, "lines.yaml");
+        const Scene scene = ReadSceneText(yaml, "lines.yaml");
         return RenderScene(scene, PlanScene(scene), 1).pixels;
     };
     const std::vector<float> ref = render(5.0);
@@ -224,7 +224,7 @@ TEST_CASE("A light with no power in the bands is refused by both render paths al
           "[robustness][spectra]")
 {
     // Lines at 820 nm and 59 µm: nothing in 400-700 nm, so no I_max to normalise by.
-    const Scene s = cli::ReadSceneText(
+    const Scene s = ReadSceneText(
         "render: {mode: spectral}\nlights:\n  - {type: point, spectrum: {lines: [[820, 1], "
         "[59003, 1]]}}\n",
         "ir.yaml");

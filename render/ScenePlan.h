@@ -1,24 +1,26 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "transforms/Scene.h"
+#include "render/Scene.h"
 
 namespace bandlight
 {
 
 /// What the renderer will evaluate, decided from the scene before any pixel
-/// (SPEC §2.6: simulate only the effects a scene calls for).
+/// (SPEC §2.6: simulate only the effects a scene calls for). The plan
+/// changes the cost, never the picture: RenderScene with a plan gives
+/// RenderSceneUnplanned's image (tested to 1e-6 on generated scenes).
 struct ScenePlan
 {
     bool specular = false;       ///< some material has a non-zero R_spek
     bool attenuation = false;    ///< some point light attenuates
     bool ambient = false;        ///< some ambient light and some non-zero R_amb
     bool ambientFolded = false;  ///< one direct light: the ambient is a per-material constant
-    /// Direct lights grouped by spectrum: each group is one spectral term.
+    /// Direct lights grouped by their spectrum's values (never by name):
+    /// each group is one spectral term.
     std::vector<std::vector<int>> groups;
     double stepNm = 5.0;               ///< spectral grid (spectral mode)
     int samples = 0;                   ///< spectral samples (or bands) per product
@@ -49,39 +51,5 @@ ScenePlan PlanScene(const Scene& scene, const PlanOptions& options = {});
 
 /// The plan as text, for `bandlight render --explain`.
 std::string ExplainPlan(const Scene& scene, const ScenePlan& plan);
-
-/// Work the renderer did, counted (summed over threads).
-struct RenderCounters
-{
-    uint64_t pixels = 0;
-    uint64_t hits = 0;
-    uint64_t lightTerms = 0;        ///< (pixel, light) geometry evaluations
-    uint64_t specularTerms = 0;     ///< cosⁿψ evaluations
-    uint64_t attenuationTerms = 0;  ///< f_att evaluations
-    uint64_t spectralSamples = 0;   ///< per-pixel spectral samples (the unplanned path)
-};
-
-/// A rendered image: interleaved float channels, row-major, top row first.
-struct RenderedImage
-{
-    int width = 0;
-    int height = 0;
-    int channels = 3;
-    std::vector<std::string> channelNames;
-    std::vector<float> pixels;
-};
-
-/// Renders with a plan: primary rays against spheres and planes (no
-/// shadows: the lecture's local Phong model), per pixel
-/// Σ_terms geometry × precomputed colour; rows split over `threads` threads
-/// (0: all cores).
-RenderedImage RenderScene(const Scene& scene, const ScenePlan& plan, int threads = 0,
-                          RenderCounters* counters = nullptr);
-
-/// The same image computed the slow, literal way: per pixel, per light, per
-/// band or wavelength sample, then converted — the reference the planned
-/// path is tested against.
-RenderedImage RenderSceneUnplanned(const Scene& scene, int threads = 0,
-                                   RenderCounters* counters = nullptr);
 
 }  // namespace bandlight

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+// The scene model of `bandlight render`: lights with spectra, Phong
+// materials with remittances, spheres, planes, a camera and the render
+// settings (SPEC §1.3, §2 item 6). Plain values; the reader is
+// render/SceneFile.h, the planner render/ScenePlan.h.
+
 #include <string>
 #include <vector>
 
@@ -15,13 +20,17 @@ namespace bandlight
 /// lines, or both (a band-valued one is a step spectrum over its bands).
 struct SceneSpectrum
 {
-    std::string name;  ///< what it was given as ("D65", "TCS09", "bands 0.4,0.5,1"): lights
-                       ///< with the same name share one spectral term
+    std::string name;  ///< what it was given as ("D65", "TCS09", "bands 400,500,600,700"), for
+                       ///< messages only: the planner groups lights by their values
     Spectrum continuous;
     LineSpectrum lines;
 
     bool isZero() const noexcept;
     bool hasLines() const noexcept { return !lines.empty(); }
+    /// The same values: the same grid and samples and the same lines, exactly
+    /// (names are not compared). Lights for which this holds share one
+    /// spectral term in the plan.
+    bool sameValues(const SceneSpectrum& other) const noexcept;
 };
 
 /// A step spectrum with value v[b] over band b (zero outside): how band
@@ -66,7 +75,8 @@ struct SceneMaterial
 
 /// The lecture's material table (SPEC §1.3), as band values over VB/VG/VR:
 /// copper, gold, silver, aluminium, tin, matte lacquer, gloss lacquer.
-/// R_amb is taken equal to R_diff. Throws Exception for another name.
+/// R_amb is taken equal to R_diff (the table has no ambient column). Throws
+/// Exception for another name.
 SceneMaterial LectureMaterial(const std::string& name);
 const std::vector<std::string>& LectureMaterialNames();
 
@@ -86,10 +96,20 @@ struct Plane
 
 struct Camera
 {
+    enum class Projection
+    {
+        PINHOLE,       ///< rays from `position` through the image plane, `fovDeg` apart
+        ORTHOGRAPHIC,  ///< parallel rays along the view direction, as the lecture's figures
+    };
+    Projection projection = Projection::PINHOLE;
     Vec3 position = Vec3(0, 0, 5);
     Vec3 lookAt = Vec3::Zero();
     Vec3 up = Vec3(0, 1, 0);
-    double fovDeg = 40.0;
+    double fovDeg = 40.0;  ///< PINHOLE: vertical field of view, degrees (0–180)
+    /// ORTHOGRAPHIC: the height of the view in scene units (its width is
+    /// size × width / height); rays start on the plane through `position`
+    /// facing `lookAt`.
+    double size = 2.0;
     int width = 320;
     int height = 240;
 };
@@ -103,9 +123,30 @@ struct RenderSettings
     };
     Mode mode = Mode::BAND;
     BandSet bands = BandSet::Lecture();
-    double stepNm = 0.0;            ///< spectral grid; 0: chosen by the planner
+    double stepNm = 0.0;  ///< spectral grid; 0: chosen by the planner
+    /// The spectral integration range, nm: samples at rangeMinNm + i·step up
+    /// to rangeMaxNm, and the emission lines inside it. The default is SPEC
+    /// §1.1's and the lecture's 380–780 nm (the spectral reference of
+    /// transforms/ sums the same); 360–830 nm, the matching functions' full
+    /// range (CIE 15:2004), is the widest allowed.
+    double rangeMinNm = kDefaultRangeMinNm;
+    double rangeMaxNm = kDefaultRangeMaxNm;
     std::string output = "acescg";  ///< a working space, or "bands" (band mode: band values)
+
+    static constexpr double kDefaultRangeMinNm = 380.0;
+    static constexpr double kDefaultRangeMaxNm = 780.0;
+    static constexpr double kWidestRangeMinNm = 360.0;
+    static constexpr double kWidestRangeMaxNm = 830.0;
 };
+
+/// Sets the mode from its name: "band3" (the lecture's VB/VG/VR), "bandN"
+/// (N equal bands over 400–700 nm, 3 ≤ N ≤ 300) or "spectral" (the bands
+/// are kept: they normalise the lights). Throws Exception otherwise.
+void SetRenderMode(RenderSettings& settings, const std::string& mode);
+
+/// The number of bands a mode name asks for ("band6": 6), 0 for "spectral";
+/// throws Exception for anything else.
+size_t ModeBandCount(const std::string& mode);
 
 struct Scene
 {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/Scene.h"
+#include "render/Scene.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "spectral/Exception.h"
 
@@ -15,6 +16,54 @@ bool SceneSpectrum::isZero() const noexcept
     const bool noLines = std::all_of(lines.lines().begin(), lines.lines().end(),
                                      [](const SpectralLine& l) { return l.power == 0.0; });
     return flatZero && noLines;
+}
+
+bool SceneSpectrum::sameValues(const SceneSpectrum& other) const noexcept
+{
+    const Spectrum& a = continuous;
+    const Spectrum& b = other.continuous;
+    const bool sameContinuous =
+        a.empty() == b.empty() &&
+        (a.empty() || (a.start() == b.start() && a.step() == b.step() && a.values() == b.values()));
+    const auto& la = lines.lines();
+    const auto& lb = other.lines.lines();
+    return sameContinuous && la.size() == lb.size() &&
+           std::equal(la.begin(), la.end(), lb.begin(),
+                      [](const SpectralLine& x, const SpectralLine& y)
+                      { return x.wavelengthNm == y.wavelengthNm && x.power == y.power; });
+}
+
+size_t ModeBandCount(const std::string& mode)
+{
+    std::string m = mode;
+    std::transform(m.begin(), m.end(), m.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (m == "spectral")
+    {
+        return 0;
+    }
+    const std::string digits = m.rfind("band", 0) == 0 ? m.substr(4) : std::string();
+    const bool ok = !digits.empty() && digits.size() <= 3 &&
+                    std::all_of(digits.begin(), digits.end(),
+                                [](unsigned char c) { return std::isdigit(c) != 0; });
+    const int n = ok ? std::stoi(digits) : 0;
+    if (n < 3 || n > 300)
+    {
+        throw Exception("mode must be band3, bandN (3 <= N <= 300) or spectral, got '" + mode +
+                        "'");
+    }
+    return size_t(n);
+}
+
+void SetRenderMode(RenderSettings& settings, const std::string& mode)
+{
+    const size_t n = ModeBandCount(mode);
+    if (n == 0)
+    {
+        settings.mode = RenderSettings::Mode::SPECTRAL;
+        return;
+    }
+    settings.mode = RenderSettings::Mode::BAND;
+    settings.bands = n == 3 ? BandSet::Lecture() : BandSet::Equal(n, 400.0, 700.0);
 }
 
 Spectrum StepSpectrum(const BandSet& bands, const std::vector<double>& values)

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "transforms/Scene.h"
+#include "render/Scene.h"
 
 namespace bandlight::detail
 {
@@ -32,14 +32,28 @@ std::vector<double> Means(const SceneSpectrum& s, const BandSet& bands);
 /// 1 / the light's largest band mean (the lecture's normalisation).
 double LightScale(const SceneSpectrum& s, const BandSet& bands);
 
-/// A spectral sampling grid from 360 nm to 830 nm.
+/// A spectral sampling grid: `count` samples from `start` nm, `step` apart,
+/// the last at most `end`; emission lines count inside [start, end].
 struct Grid
 {
+    double start;
+    double end;
     double step;
     int count;
-    double wavelength(int i) const { return 360.0 + step * i; }
+    double wavelength(int i) const { return start + step * i; }
+    bool contains(double nm) const { return nm >= start && nm <= end; }
 };
-Grid MakeGrid(double step);
+/// The grid of `step` nm over the scene's integration range; throws
+/// Exception for a step outside 0.1–50 nm or a range outside 360–830 nm.
+Grid MakeGrid(const RenderSettings& settings, double step);
+
+/// "81 samples at 5 nm over 380-780 nm (as the scene sets)": the grid and
+/// where its range comes from.
+std::string DescribeRange(const RenderSettings& settings, const Grid& grid);
+
+/// The spectral grid step both render paths use: the scene's, or the
+/// planner's choice (ChooseStep); `why` says which, in words.
+double GridStep(const Scene& s, std::string& why);
 
 /// Matching functions on a grid, as weights cmf(λ_i)·Δλ / N_y, and the
 /// band integrals N_k of each.
@@ -62,8 +76,10 @@ std::vector<double> ToChannels(const Output& out, const Vec3& xyz);
 std::vector<double> ProductColour(const Scene& s, const Output& out, const SceneSpectrum& light,
                                   const Spectrum& remittance, const Grid& grid, const Cmf& cmf);
 
-/// The coarsest grid that reproduces every product of the scene (see
-/// docs/scenes.md); `why` says so in words.
+/// The coarsest of 20, 10, 5 and 2 nm that reproduces every light ×
+/// remittance product of the scene to 1e-4 of white, 1 nm (the reference
+/// grid) when none does (see docs/scenes.md); `why` says so in words, and
+/// names the product that needs the finer grid.
 double ChooseStep(const Scene& s, std::string& why);
 
 /// Throws Exception for material indices out of range or an empty image.

@@ -3,11 +3,11 @@
 
 #include <catch2/catch.hpp>
 
+#include "render/SceneRenderer.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "spectral/RgbSpaces.h"
 #include "transforms/BandModel.h"
-#include "transforms/SceneRenderer.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;
@@ -48,7 +48,7 @@ const float* Pixel(const RenderedImage& img, int x, int y)
 }
 }  // namespace
 
-TEST_CASE("The lecture's counter-example: spectral black, band (0, 0.2, 0)", "[transforms][scene]")
+TEST_CASE("The lecture's counter-example: spectral black, band (0, 0.2, 0)", "[render][scene]")
 {
     // SPEC §1.4: light 1 on VB, VR and 500–549 nm; surface 0.8 on 550–599 nm only.
     std::vector<double> light(471), surface(471);
@@ -89,7 +89,7 @@ TEST_CASE("The lecture's counter-example: spectral black, band (0, 0.2, 0)", "[t
 }
 
 TEST_CASE("One light, no specular, no attenuation: R_amb* + R_diff cos α in closed form",
-          "[transforms][scene]")
+          "[render][scene]")
 {
     SceneMaterial m;
     m.diffuse = Bands({0.4, 0.5, 1.0});  // copper's R_diff
@@ -112,7 +112,7 @@ TEST_CASE("One light, no specular, no attenuation: R_amb* + R_diff cos α in clo
     }
 }
 
-TEST_CASE("Spectral mode agrees with the spectral core on a flat-lit plane", "[transforms][scene]")
+TEST_CASE("Spectral mode agrees with the spectral core on a flat-lit plane", "[render][scene]")
 {
     for (const char* tcs : {"TCS01", "TCS09", "TCS12"})
     {
@@ -148,7 +148,7 @@ TEST_CASE("Spectral mode agrees with the spectral core on a flat-lit plane", "[t
 }
 
 TEST_CASE("The planner: a term switched off gives the full pipeline's image, without the work",
-          "[transforms][scene]")
+          "[render][scene]")
 {
     SceneMaterial m = LectureMaterial("gold");
     m.specular = {"0", ConstantRemittance(0.0), {}};  // specular coefficient zero
@@ -202,7 +202,7 @@ TEST_CASE("The planner: a term switched off gives the full pipeline's image, wit
 }
 
 TEST_CASE("Attenuation is only evaluated when a light attenuates, and is capped at 1",
-          "[transforms][scene]")
+          "[render][scene]")
 {
     SceneMaterial m = LectureMaterial("silver");
     Scene s = FlatScene(m);
@@ -223,7 +223,7 @@ TEST_CASE("Attenuation is only evaluated when a light attenuates, and is capped 
     CHECK(Pixel(dim, 4, 3)[1] < 0.6 * Pixel(none, 4, 3)[1]);
 }
 
-TEST_CASE("Emission lines are integrated exactly in spectral mode", "[transforms][scene]")
+TEST_CASE("Emission lines are integrated exactly in spectral mode", "[render][scene]")
 {
     SceneMaterial m;
     m.diffuse = {"white", ConstantRemittance(1.0), {}};
@@ -238,4 +238,126 @@ TEST_CASE("Emission lines are integrated exactly in spectral mode", "[transforms
     const float* p = Pixel(img, 4, 3);
     CHECK(p[0] > 0.0f);
     CHECK(Pixel(slow, 4, 3)[0] == Approx(p[0]).epsilon(1e-6));
+}
+
+TEST_CASE("An orthographic camera sees a sphere the same size from any distance", "[render][scene]")
+{
+    // size 4 over 40 pixels: 0.1 scene units a pixel, so a sphere of radius 1
+    // covers the 20 pixels whose centres lie within 1 of its centre.
+    SceneMaterial m;
+    m.diffuse = {"white", ConstantRemittance(1.0), {}};
+    m.ambient = m.specular = {"0", ConstantRemittance(0.0), {}};
+    Scene s;
+    s.materials = {m};
+    s.spheres = {{Vec3::Zero(), 1.0, 0}};
+    s.lights = {Directional({"D65", BuiltinIlluminant("D65"), {}}, Vec3(0, 0, -1))};
+    s.camera.projection = Camera::Projection::ORTHOGRAPHIC;
+    s.camera.size = 4.0;
+    s.camera.width = 40;
+    s.camera.height = 40;
+    auto covered = [&](double distance)
+    {
+        s.camera.position = Vec3(0, 0, distance);
+        const RenderedImage img = RenderScene(s, PlanScene(s), 1);
+        int n = 0;
+        for (int x = 0; x < img.width; ++x)
+        {
+            n += Pixel(img, x, 20)[1] > 0.0f;
+        }
+        return n;
+    };
+    CHECK(covered(3.0) == 20);
+    CHECK(covered(30.0) == 20);
+    // Parallel rays in both render paths alike.
+    s.camera.position = Vec3(0, 0, 3);
+    const RenderedImage img = RenderScene(s, PlanScene(s), 1);
+    const RenderedImage slow = RenderSceneUnplanned(s, 1);
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+    {
+        CHECK(slow.pixels[i] == Approx(img.pixels[i]).margin(1e-6));
+    }
+    s.camera.size = 0.0;
+    CHECK_THROWS_WITH(PlanScene(s),
+                      "an orthographic camera's size must be positive and at most 1e9");
+}
+
+TEST_CASE("The spectral range bounds the samples and the lines", "[render][scene]")
+{
+    SceneMaterial m;
+    m.diffuse = {"white", ConstantRemittance(1.0), {}};
+    m.ambient = m.specular = {"0", ConstantRemittance(0.0), {}};
+    Scene s = FlatScene(m);
+    s.settings.mode = RenderSettings::Mode::SPECTRAL;
+    s.settings.stepNm = 5.0;
+    s.settings.output = "lin-rec709";
+    // A line at 790 nm counts over 360-830 nm and not over 380-780 nm (the default).
+    s.lights = {
+        Directional({"lines", {}, LineSpectrum({{550.0, 1.0}, {790.0, 1.0}})}, Vec3(0, 0, -1))};
+    const ScenePlan plan = PlanScene(s);
+    CHECK(plan.lineCount == 1);
+    CHECK(plan.samples == 81);
+    CHECK_THAT(ExplainPlan(s, plan),
+               Contains("spectral range: 81 samples at 5 nm over 380-780 nm (the default, as "
+                        "SPEC §1.1 sums)") &&
+                   Contains("1 emission lines outside the integration range: not counted"));
+    const RenderedImage narrow = RenderScene(s, plan, 1);
+    const RenderedImage slow = RenderSceneUnplanned(s, 1);
+    CHECK(Pixel(slow, 4, 3)[0] == Approx(Pixel(narrow, 4, 3)[0]).epsilon(1e-6));
+    s.settings.rangeMinNm = 360.0;
+    s.settings.rangeMaxNm = 830.0;
+    const ScenePlan widePlan = PlanScene(s);
+    CHECK(widePlan.lineCount == 2);
+    CHECK_THAT(ExplainPlan(s, widePlan),
+               Contains("spectral range: 95 samples at 5 nm over 360-830 nm (as the scene sets)"));
+    const RenderedImage wide = RenderScene(s, widePlan, 1);
+    CHECK(Pixel(wide, 4, 3)[0] > Pixel(narrow, 4, 3)[0]);
+    CHECK(Pixel(RenderSceneUnplanned(s, 1), 4, 3)[0] == Approx(Pixel(wide, 4, 3)[0]).epsilon(1e-6));
+    // D65 on white: the matching functions beyond 380-780 nm add little.
+    s.lights = {Directional({"D65", BuiltinIlluminant("D65"), {}}, Vec3(0, 0, -1))};
+    const float y360 = Pixel(RenderScene(s, PlanScene(s), 1), 4, 3)[1];
+    s.settings.rangeMinNm = 380.0;
+    s.settings.rangeMaxNm = 780.0;
+    const float y380 = Pixel(RenderScene(s, PlanScene(s), 1), 4, 3)[1];
+    CHECK(y360 != y380);
+    CHECK(y360 == Approx(y380).epsilon(1e-3));
+}
+
+TEST_CASE("The grid message names the product that needs 1 nm", "[render][scene]")
+{
+    // A band-valued remittance jumps at 500 and 600 nm; a grid of step h
+    // moves a jump by up to h/2, on samples or between them, so only the
+    // reference grid reproduces it.
+    SceneMaterial m = LectureMaterial("gold");
+    Scene s = FlatScene(m);
+    s.lights = {Directional({"D65", BuiltinIlluminant("D65"), {}}, Vec3(0, 0, -1))};
+    s.settings.mode = RenderSettings::Mode::SPECTRAL;
+    const ScenePlan plan = PlanScene(s);
+    CHECK(plan.stepNm == 1.0);
+    CHECK_THAT(ExplainPlan(s, plan),
+               Contains("spectral grid: 1 nm, the reference grid: at 2 nm light 'D65' on "
+                        "remittance 'gold R_"));
+    // Spectra without jumps get a coarser grid (D65 on TCS09: 2 nm).
+    SceneMaterial smooth;
+    smooth.diffuse = {"TCS09", TestColourSamples()[8].spectrum, {}};
+    smooth.ambient = smooth.specular = {"0", ConstantRemittance(0.0), {}};
+    s.materials = {smooth};
+    const ScenePlan coarse = PlanScene(s);
+    CHECK(coarse.stepNm > 1.0);
+    CHECK_THAT(ExplainPlan(s, coarse), Contains("nm reproduces every light x remittance product"));
+}
+
+TEST_CASE("The literal path says what it does", "[render][scene]")
+{
+    SceneMaterial m = LectureMaterial("tin");
+    Scene s = FlatScene(m);
+    s.lights = {Directional({"D65", BuiltinIlluminant("D65"), {}}, Vec3(0, 0, -1)),
+                Directional({"D65", BuiltinIlluminant("D65"), {}}, Vec3(0, -1, -1))};
+    const std::string text = ExplainUnplanned(s);
+    CHECK_THAT(text, Contains("the literal path: no plan") &&
+                         Contains("every light on its own: 2 direct lights") &&
+                         Contains("per light, per band") && !Contains("summed"));
+    s.settings.mode = RenderSettings::Mode::SPECTRAL;
+    s.settings.stepNm = 5.0;
+    CHECK_THAT(ExplainUnplanned(s), Contains("per light, per wavelength sample") &&
+                                        Contains("81 samples at 5 nm over 380-780 nm"));
 }

@@ -1,21 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/SceneRenderer.h"
+#include "render/SceneRenderer.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <map>
 #include <mutex>
 #include <sstream>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "render/SceneColour.h"
 #include "spectral/CieData.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
-#include "transforms/SceneColour.h"
 
 namespace bandlight
 {
@@ -84,7 +83,9 @@ bool Intersect(const Scene& s, const Vec3& o, const Vec3& d, Hit& hit)
 struct CameraRays
 {
     Vec3 origin, forward, right, up;
-    double tanHalf, aspect;
+    bool orthographic;
+    double halfHeight;  ///< tan(fov/2) (pinhole), or half the view's height (orthographic)
+    double aspect;
     int width, height;
 
     explicit CameraRays(const Camera& c)
@@ -92,18 +93,29 @@ struct CameraRays
           forward((c.lookAt - c.position).normalized()),
           right(forward.cross(c.up).normalized()),
           up(right.cross(forward)),
-          tanHalf(std::tan(0.5 * c.fovDeg * 3.14159265358979323846 / 180.0)),
+          orthographic(c.projection == Camera::Projection::ORTHOGRAPHIC),
+          halfHeight(orthographic ? 0.5 * c.size
+                                  : std::tan(0.5 * c.fovDeg * 3.14159265358979323846 / 180.0)),
           aspect(double(c.width) / double(c.height)),
           width(c.width),
           height(c.height)
     {
     }
 
-    Vec3 direction(int x, int y) const
+    /// The primary ray through the centre of pixel (x, y): its origin and
+    /// unit direction.
+    void ray(int x, int y, Vec3& o, Vec3& d) const
     {
-        const double u = (2.0 * (x + 0.5) / width - 1.0) * tanHalf * aspect;
-        const double v = (1.0 - 2.0 * (y + 0.5) / height) * tanHalf;
-        return (forward + u * right + v * up).normalized();
+        const double u = (2.0 * (x + 0.5) / width - 1.0) * halfHeight * aspect;
+        const double v = (1.0 - 2.0 * (y + 0.5) / height) * halfHeight;
+        if (orthographic)
+        {
+            o = origin + u * right + v * up;
+            d = forward;
+            return;
+        }
+        o = origin;
+        d = (forward + u * right + v * up).normalized();
     }
 };
 
@@ -215,9 +227,10 @@ RenderedImage CastRays(const Scene& s, const Output& out, int threads, RenderCou
                    for (int x = 0; x < img.width; ++x)
                    {
                        ++c.pixels;
-                       const Vec3 d = cam.direction(x, y);
+                       Vec3 o, d;
+                       cam.ray(x, y, o, d);
                        Hit hit;
-                       if (!Intersect(s, cam.origin, d, hit))
+                       if (!Intersect(s, o, d, hit))
                        {
                            continue;
                        }
@@ -294,9 +307,8 @@ RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* 
     const BandSet& bands = s.settings.bands;
     // The same grid the planner would choose, so the two paths compare.
     std::string why;
-    const Grid grid = MakeGrid(!spectral                 ? 5.0
-                               : s.settings.stepNm > 0.0 ? s.settings.stepNm
-                                                         : ChooseStep(s, why));
+    const Grid grid =
+        spectral ? MakeGrid(s.settings, GridStep(s, why)) : MakeGrid(RenderSettings{}, 5.0);
     const Cmf cmf = MakeCmf(grid, bands);
     const int n = spectral ? grid.count : int(bands.size());
 
@@ -375,6 +387,10 @@ RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* 
                     for (const SpectralLine& line : l.spectrum.lines.lines())
                     {
                         const double w = line.wavelengthNm;
+                        if (!grid.contains(w))
+                        {
+                            continue;
+                        }
                         const double r = ka * mat.ambient.continuous(w) +
                                          kd * mat.diffuse.continuous(w) +
                                          ks * mat.specular.continuous(w) +
@@ -409,6 +425,56 @@ RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* 
                 px[k] = float(colour[k]);
             }
         });
+}
+
+std::string ExplainUnplanned(const Scene& s)
+{
+    CheckScene(s);
+    const Output out = MakeOutput(s);
+    const bool spectral = s.settings.mode == RenderSettings::Mode::SPECTRAL;
+    int direct = 0, ambient = 0, lines = 0, outside = 0;
+    std::string why;
+    const Grid grid =
+        spectral ? MakeGrid(s.settings, GridStep(s, why)) : MakeGrid(RenderSettings{}, 5.0);
+    for (const SceneLight& l : s.lights)
+    {
+        (l.kind == SceneLight::Kind::AMBIENT ? ambient : direct) += 1;
+        for (const SpectralLine& line : l.spectrum.lines.lines())
+        {
+            (!spectral || grid.contains(line.wavelengthNm) ? lines : outside) += 1;
+        }
+    }
+    std::ostringstream o;
+    o << "unplanned: " << (spectral ? "spectral" : "band") << " mode, " << s.camera.width << "x"
+      << s.camera.height << ", output " << s.settings.output << " (" << out.channels
+      << " channels), the literal path: no plan\n";
+    o << "  per pixel, every light on its own: " << direct << " direct light"
+      << (direct == 1 ? "" : "s") << " (cos a, cos^n psi and f_att evaluated for each, whatever "
+      << "the materials and lights), " << ambient << " ambient\n";
+    if (spectral)
+    {
+        o << "  per light, per wavelength sample: light x (R_amb, R_diff, R_spek, R_amb*) at "
+          << DescribeRange(s.settings, grid) << "; grid " << why << "\n";
+        if (lines)
+        {
+            o << "  " << lines << " emission lines: light x remittance at each line, per pixel\n";
+        }
+        if (outside)
+        {
+            o << "  " << outside << " emission lines outside the integration range: not counted\n";
+        }
+        o << "  then the pixel's spectrum is integrated against the matching functions and "
+             "converted to "
+          << s.settings.output << "\n";
+    }
+    else
+    {
+        o << "  per light, per band: light x (R_amb, R_diff, R_spek, R_amb*) in "
+          << s.settings.bands.size() << " bands (" << s.settings.bands.describe() << " nm)\n";
+        o << "  then the band values are "
+          << (out.bands ? "written as they are" : "converted to " + s.settings.output) << "\n";
+    }
+    return o.str();
 }
 
 }  // namespace bandlight

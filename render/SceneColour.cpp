@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/SceneColour.h"
+#include "render/SceneColour.h"
 
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Geometry>
 #include <sstream>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "spectral/CieData.h"
@@ -77,15 +76,47 @@ double LightScale(const SceneSpectrum& s, const BandSet& bands)
     return 1.0 / peak;
 }
 
-Grid MakeGrid(double step)
+Grid MakeGrid(const RenderSettings& settings, double step)
 {
-    // 360–830 nm, the matching functions' range; the step bounded so the
-    // sample count is a sane int (scene files refuse the same range).
+    // The step bounded so the sample count is a sane int (scene files refuse
+    // the same range); the range inside 360–830 nm, the matching functions'.
     if (!(step >= 0.1 && step <= 50.0))
     {
         throw Exception("spectral step " + std::to_string(step) + " nm is outside 0.1-50 nm");
     }
-    return {step, int(std::floor((830.0 - 360.0) / step + 1e-9)) + 1};
+    const double a = settings.rangeMinNm;
+    const double b = settings.rangeMaxNm;
+    if (!(a >= RenderSettings::kWidestRangeMinNm && b <= RenderSettings::kWidestRangeMaxNm &&
+          b - a >= step))
+    {
+        std::ostringstream o;
+        o << "spectral range " << a << "-" << b << " nm must lie within 360-830 nm and span at "
+          << "least one step (" << step << " nm)";
+        throw Exception(o.str());
+    }
+    return {a, b, step, int(std::floor((b - a) / step + 1e-9)) + 1};
+}
+
+std::string DescribeRange(const RenderSettings& settings, const Grid& grid)
+{
+    const bool byDefault = settings.rangeMinNm == RenderSettings::kDefaultRangeMinNm &&
+                           settings.rangeMaxNm == RenderSettings::kDefaultRangeMaxNm;
+    std::ostringstream o;
+    o << grid.count << " samples at " << grid.step << " nm over " << grid.start << "-" << grid.end
+      << " nm" << (byDefault ? " (the default, as SPEC §1.1 sums)" : " (as the scene sets)");
+    return o.str();
+}
+
+double GridStep(const Scene& s, std::string& why)
+{
+    if (s.settings.stepNm > 0.0)
+    {
+        std::ostringstream o;
+        o << s.settings.stepNm << " nm as the scene sets";
+        why = o.str();
+        return s.settings.stepNm;
+    }
+    return ChooseStep(s, why);
 }
 
 namespace
@@ -150,6 +181,10 @@ Vec3 ProductXyz(const SceneSpectrum& light, double scale, const Spectrum& remitt
     for (const SpectralLine& line : light.lines.lines())
     {
         const double l = line.wavelengthNm;
+        if (!g.contains(l))
+        {
+            continue;  // outside the integration range, like the samples
+        }
         xyz += line.power * remittance(l) * Vec3(f.x(l), f.y(l), f.z(l)) / cmf.norm.y();
     }
     return xyz * scale;
@@ -193,24 +228,30 @@ std::vector<double> ProductColour(const Scene& s, const Output& out, const Scene
     return ToChannels(out, BandToXyz(bands) * product);
 }
 
-/// The coarsest of 20, 10, 5, 2, 1 nm that reproduces every product of the
-/// scene (1 nm as the truth) to 1e-4 of the light's white.
+/// The coarsest of 20, 10, 5, 2 nm that reproduces every product of the
+/// scene (1 nm as the truth) to 1e-4 of the light's white; else 1 nm.
 double ChooseStep(const Scene& s, std::string& why)
 {
     const BandSet& bands = s.settings.bands;
-    const Grid fine = MakeGrid(1.0);
+    const Grid fine = MakeGrid(s.settings, 1.0);
     const Cmf fineCmf = MakeCmf(fine, bands);
+    double worst = 0.0;
+    std::string worstLight, worstRemittance;
     for (double step : {20.0, 10.0, 5.0, 2.0})
     {
-        const Grid g = MakeGrid(step);
+        if (fine.end - fine.start < step)
+        {
+            continue;
+        }
+        const Grid g = MakeGrid(s.settings, step);
         const Cmf c = MakeCmf(g, bands);
-        double worst = 0.0;
+        worst = 0.0;
         for (const SceneLight& l : s.lights)
         {
             const double scale = LightScale(l.spectrum, bands);
             for (const SceneMaterial& m : s.materials)
             {
-                for (const SceneSpectrum* r : {&m.ambient, &m.diffuse, &m.specular})
+                for (const SceneSpectrum* r : {&m.ambient, &m.diffuse, &m.specular, &m.ambientStar})
                 {
                     if (r->continuous.empty())
                     {
@@ -218,7 +259,13 @@ double ChooseStep(const Scene& s, std::string& why)
                     }
                     const Vec3 a = ProductXyz(l.spectrum, scale, r->continuous, g, c);
                     const Vec3 b = ProductXyz(l.spectrum, scale, r->continuous, fine, fineCmf);
-                    worst = std::max(worst, (a - b).cwiseAbs().maxCoeff());
+                    const double e = (a - b).cwiseAbs().maxCoeff();
+                    if (e > worst)
+                    {
+                        worst = e;
+                        worstLight = l.spectrum.name;
+                        worstRemittance = r->name;
+                    }
                 }
             }
         }
@@ -231,7 +278,10 @@ double ChooseStep(const Scene& s, std::string& why)
             return step;
         }
     }
-    why = "the spectra have detail finer than 2 nm: 1 nm";
+    std::ostringstream o;
+    o << "1 nm, the reference grid: at 2 nm light '" << worstLight << "' on remittance '"
+      << worstRemittance << "' is off by " << worst << " of white (tolerance 1e-4)";
+    why = o.str();
     return 1.0;
 }
 
@@ -258,6 +308,12 @@ void CheckScene(const Scene& s)
     {
         throw Exception("the image size must be positive");
     }
+    const RenderSettings& set = s.settings;
+    if (!(set.rangeMinNm >= RenderSettings::kWidestRangeMinNm &&
+          set.rangeMaxNm <= RenderSettings::kWidestRangeMaxNm && set.rangeMinNm < set.rangeMaxNm))
+    {
+        throw Exception("the spectral range must lie within 360-830 nm, its start below its end");
+    }
     // Degenerate geometry is refused here, so that the renderer never
     // normalises a zero vector (the scene reader says the same with a line).
     const Camera& c = s.camera;
@@ -274,9 +330,13 @@ void CheckScene(const Scene& s)
     {
         throw Exception("the camera's up vector is zero or parallel to its view direction");
     }
-    if (!(c.fovDeg > 0.0 && c.fovDeg < 180.0))
+    if (c.projection == Camera::Projection::PINHOLE && !(c.fovDeg > 0.0 && c.fovDeg < 180.0))
     {
         throw Exception("the camera's field of view must lie between 0 and 180 degrees");
+    }
+    if (c.projection == Camera::Projection::ORTHOGRAPHIC && !(c.size > 0.0 && c.size <= 1e9))
+    {
+        throw Exception("an orthographic camera's size must be positive and at most 1e9");
     }
     for (const Sphere& sp : s.spheres)
     {
@@ -312,6 +372,19 @@ void CheckScene(const Scene& s)
         {
             throw Exception("a light's position, direction and attenuation must be finite");
         }
+    }
+    const auto direct =
+        std::count_if(s.lights.begin(), s.lights.end(),
+                      [](const SceneLight& l) { return l.kind != SceneLight::Kind::AMBIENT; });
+    const bool anyStar =
+        std::any_of(s.materials.begin(), s.materials.end(),
+                    [](const SceneMaterial& m) { return !m.ambientStar.isZero(); });
+    if (anyStar && direct != 1)
+    {
+        // I = I_0 (R_amb* + ...) is the single-source form: with more or
+        // fewer sources R_amb* has no I_0 to scale it.
+        throw Exception("R_amb* (ambient_star) needs exactly one direct light, the scene has " +
+                        std::to_string(direct));
     }
     for (const SceneMaterial& m : s.materials)
     {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The planner: what a scene calls for, and its spectral products, computed once.
+#include "render/ScenePlan.h"
+
 #include <algorithm>
-#include <map>
 #include <sstream>
 
+#include "render/SceneColour.h"
 #include "spectral/Exception.h"
-#include "transforms/SceneColour.h"
-#include "transforms/SceneRenderer.h"
 
 namespace bandlight
 {
@@ -36,8 +36,9 @@ ScenePlan PlanScene(const Scene& s, const PlanOptions& options)
                         : options.optimise ? "attenuation: skipped, f_att = 1 for every light"
                                            : "attenuation: evaluated (planner off)");
 
-    // Direct lights grouped by spectrum: one spectral term per group.
-    std::map<std::string, size_t> byName;
+    // Direct lights grouped by what they are — their spectrum's values,
+    // exactly — never by what they are called: two `{bands: [...]}` lights
+    // share a name but not a colour. One spectral term per group.
     int direct = 0;
     for (size_t i = 0; i < s.lights.size(); ++i)
     {
@@ -47,14 +48,16 @@ ScenePlan PlanScene(const Scene& s, const PlanOptions& options)
             continue;
         }
         ++direct;
-        const auto it = byName.find(l.spectrum.name);
-        if (options.optimise && it != byName.end())
+        const auto same =
+            std::find_if(p.groups.begin(), p.groups.end(),
+                         [&](const std::vector<int>& g)
+                         { return s.lights[size_t(g[0])].spectrum.sameValues(l.spectrum); });
+        if (options.optimise && same != p.groups.end())
         {
-            p.groups[it->second].push_back(int(i));
+            same->push_back(int(i));
         }
         else
         {
-            byName[l.spectrum.name] = p.groups.size();
             p.groups.push_back({int(i)});
         }
     }
@@ -78,25 +81,33 @@ ScenePlan PlanScene(const Scene& s, const PlanOptions& options)
                             : "ambient: a per-material constant term");
 
     // Spectral grid and the products.
-    Grid grid = MakeGrid(5.0);
+    Grid grid = MakeGrid(RenderSettings{}, 5.0);  // band mode: unused
     if (spectral)
     {
         std::string why;
-        const double step = s.settings.stepNm > 0.0 ? s.settings.stepNm : ChooseStep(s, why);
-        grid = MakeGrid(step);
+        const double step = GridStep(s, why);
+        grid = MakeGrid(s.settings, step);
         p.stepNm = step;
         p.samples = grid.count;
-        p.reasons.push_back(
-            "spectral grid: " +
-            (s.settings.stepNm > 0.0 ? std::to_string(step) + " nm as the scene sets" : why));
+        p.reasons.push_back("spectral grid: " + why);
+        p.reasons.push_back("spectral range: " + DescribeRange(s.settings, grid));
+        int outside = 0;
         for (const SceneLight& l : s.lights)
         {
-            p.lineCount += int(l.spectrum.lines.lines().size());
+            for (const SpectralLine& line : l.spectrum.lines.lines())
+            {
+                (grid.contains(line.wavelengthNm) ? p.lineCount : outside) += 1;
+            }
         }
         if (p.lineCount)
         {
             p.reasons.push_back(std::to_string(p.lineCount) +
                                 " emission lines integrated exactly, at their wavelengths");
+        }
+        if (outside)
+        {
+            p.reasons.push_back(std::to_string(outside) +
+                                " emission lines outside the integration range: not counted");
         }
     }
     else
@@ -144,11 +155,7 @@ ScenePlan PlanScene(const Scene& s, const PlanOptions& options)
                     [](const SceneMaterial& m) { return !m.ambientStar.isZero(); });
     if (anyStar)
     {
-        if (direct != 1)
-        {
-            throw Exception("R_amb* (ambient_star) needs exactly one direct light, the scene has " +
-                            std::to_string(direct));
-        }
+        // CheckScene made sure there is exactly one direct light.
         const SceneLight& l = s.lights[size_t(p.groups[0][0])];
         for (size_t m = 0; m < nm; ++m)
         {
