@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight accuracy`: every method against the spectral reference, and
 // what each costs — one table, one JSON document, one picture.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "cli/Cost.h"
 #include "cli/Diagnostics.h"
 #include "cli/Gnuplot.h"
+#include "plugin/OcioTransforms.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 #include "transforms/Accuracy.h"
@@ -35,6 +37,8 @@ struct AccuracyCommandOptions
     std::string json;
     std::string plot;
     bool noCost = false;
+    bool idealOnly = false;
+    int lutSize = 65;
 };
 
 /// Per method over all pairs: the mean of the pairs' means, the 95th
@@ -47,8 +51,15 @@ struct Summary
     std::string worst;
 };
 
+/// Which rows a summary takes: one exposure (or all, < 0) and one form.
+struct Filter
+{
+    double exposure = 1.0;
+    bool shipped = false;
+};
+
 Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& method,
-                  const std::string& set,
+                  const std::string& set, Filter f,
                   const std::vector<std::pair<std::string, std::string>>& onlyPairs = {})
 {
     Summary s;
@@ -56,7 +67,8 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
     int n = 0;
     for (const AccuracyRow& r : rows)
     {
-        if (r.method != method || r.set != set)
+        if (r.method != method || r.set != set || r.shipped != f.shipped ||
+            (f.exposure > 0.0 && r.exposure != f.exposure))
         {
             continue;
         }
@@ -77,6 +89,31 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
     s.mean = n ? s.mean / n : 0.0;
     s.p95 = Percentile(p95s, 0.95);
     return s;
+}
+
+/// The exposure whose mean is worst, and that mean.
+std::pair<double, double> WorstExposure(
+    const std::vector<AccuracyRow>& rows, const std::string& method, const std::string& set,
+    bool shipped, const std::vector<double>& exposures,
+    const std::vector<std::pair<std::string, std::string>>& onlyPairs = {})
+{
+    std::pair<double, double> worst{1.0, -1.0};
+    for (const double k : exposures)
+    {
+        const double m = Summarise(rows, method, set, {k, shipped}, onlyPairs).mean;
+        if (m > worst.second)
+        {
+            worst = {k, m};
+        }
+    }
+    return worst;
+}
+
+/// "2^-8" for 1/256.
+std::string Stops(double k)
+{
+    const int e = int(std::lround(std::log2(k)));
+    return e == 0 ? "1" : "2^" + std::to_string(e);
 }
 
 void Plot(const std::string& path, const std::vector<std::string>& methods,
@@ -125,7 +162,8 @@ void Plot(const std::string& path, const std::vector<std::string>& methods,
     }
     const std::string script = "set title " +
                                GnuplotQuote("What accuracy costs: re-lighting " + setName +
-                                            ", mean over every illuminant pair") +
+                                            ", as shipped, at its worst exposure (2^-8 ... 2^4), "
+                                            "mean over every illuminant pair") +
                                "\n"
                                "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
                                "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
@@ -175,6 +213,29 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     {
         options.sets.push_back({file, ReadSpectraFile(file)});
     }
+    if (!o.idealOnly)
+    {
+        // The shipped form: the OCIO processor of the transform a config's
+        // look holds (guard + matrix, or shaper + 3D LUT + inverse shaper).
+        const RgbSpace& working = FindRgbSpace(options.workingSpace);
+        const Observer observer = options.observer;
+        const int lutSize = o.lutSize;
+        options.shipped = [&working, observer, lutSize](const Light& from, const Light& to,
+                                                        const MethodSpec& method) -> PixelBatch
+        {
+            const OCIO::ConstCPUProcessorRcPtr cpu =
+                OCIO::Config::CreateRaw()
+                    ->getProcessor(
+                        IlluminantChangeTransform(from, to, method, working, observer, lutSize))
+                    ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                               OCIO::OPTIMIZATION_DEFAULT);
+            return [cpu](float* rgb, size_t n)
+            {
+                OCIO::PackedImageDesc desc(rgb, long(n), 1, 3);
+                cpu->apply(desc);
+            };
+        };
+    }
 
     const size_t pairs = options.lights.size() * (options.lights.size() - 1);
     Progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
@@ -195,6 +256,10 @@ void RunAccuracy(const AccuracyCommandOptions& o)
             }
         });
 
+    Progress("accuracy: cross-validating the fitted methods and fitting the floor");
+    const std::vector<AccuracyRow> cvRows = CrossValidate(options, 5);
+    const std::vector<AccuracyRow> floorRows = MeasureFloor(options);
+
     std::vector<CostRow> cost;
     std::vector<SetupCost> setup;
     if (!o.noCost)
@@ -212,7 +277,7 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     const int allThreads = int(std::max(1u, std::thread::hardware_concurrency()));
     for (const CostRow& c : cost)
     {
-        if (c.threads == allThreads && c.form != "direct-fit")
+        if (c.threads == allThreads && c.form != "direct-fit" && c.form != "native")
         {
             costAll[c.method] = c.nsPerPixel;
             if (c.form == "ocio-matrix")
@@ -232,30 +297,77 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     const std::string heldOut = HeldOutTcs().name;
     const std::vector<std::pair<std::string, std::string>> lecturePairs = {
         {"A", "D65"}, {"F2", "D65"}, {"F11", "D65"}};
+    const bool anyShipped = bool(options.shipped);
     std::map<std::string, double> plotError;
     // With --json - stdout carries the JSON alone.
     std::ostringstream table;
     std::ostream& out = o.json == "-" ? table : std::cout;
     out << "Re-lighting accuracy, CIEDE2000 against the spectral answer (" << options.lights.size()
         << " illuminants, " << pairs << " ordered pairs, "
-        << FindRgbSpace(o.workingSpace).displayName << ")\n";
+        << FindRgbSpace(o.workingSpace).displayName << "), exposures "
+        << Stops(options.exposures.front()) << " ... " << Stops(options.exposures.back())
+        << " of the white.\n"
+           "ideal: the method's exact form; shipped: the OCIO processor of the look as a config "
+           "holds it (guard, matrix; or shaper, 3D LUT, inverse shaper). Means over pairs; "
+           "worst: the exposure whose mean is worst.\n";
     for (const ReflectanceSet& set : options.sets)
     {
         out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
-            << "  method       mean    p95     max   worst sample and pair     "
-               "A/F2/F11->D65 mean   ns/pixel\n";
+            << "  method       ideal  shipped  shipped worst (at)   p95     max   worst sample "
+               "and pair      A/F2/F11->D65 worst  ns/pixel\n";
         for (const std::string& m : options.methods)
         {
-            const Summary all = Summarise(rows, m, set.name);
-            const Summary lecture = Summarise(rows, m, set.name, lecturePairs);
+            const Summary ideal = Summarise(rows, m, set.name, {1.0, false});
+            const bool hasShipped = anyShipped && m != "spectral";
+            const Summary shipped = Summarise(rows, m, set.name, {1.0, hasShipped});
+            const auto worst = WorstExposure(rows, m, set.name, hasShipped, options.exposures);
+            const auto lecture =
+                WorstExposure(rows, m, set.name, hasShipped, options.exposures, lecturePairs);
+            const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped});
             if (set.name == heldOut)
             {
-                plotError[m] = all.mean;
+                plotError[m] = worst.second;
             }
-            char line[256];
-            std::snprintf(line, sizeof line, "  %-10s %6.2f %6.2f %7.2f   %-26s %8.2f   %10s\n",
-                          m.c_str(), all.mean, all.p95, all.max, all.worst.c_str(), lecture.mean,
-                          costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
+            char line[320];
+            std::snprintf(line, sizeof line,
+                          "  %-10s %7.2f %8.2f %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
+                          m.c_str(), ideal.mean, shipped.mean, worst.second,
+                          Stops(worst.first).c_str(), all.p95, all.max, all.worst.c_str(),
+                          lecture.second, costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
+            out << line;
+        }
+        for (const char* floor : {"floor-3x3", "floor-rootpoly"})
+        {
+            const Summary f = Summarise(floorRows, floor, set.name, {1.0, false});
+            const Summary fl = Summarise(floorRows, floor, set.name, {1.0, false}, lecturePairs);
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "  %-14s %5.2f   (fitted on this set itself: in-sample; "
+                          "A/F2/F11->D65 %.2f)\n",
+                          floor, f.mean, fl.mean);
+            out << line;
+        }
+    }
+    if (!cvRows.empty())
+    {
+        out << "\nfitted methods on their own training data (ideal, k = 1): in-sample against "
+               "5-fold cross-validated\n";
+        for (const std::string& m : options.methods)
+        {
+            const Summary in = Summarise(cvRows, m, "training, in-sample", {1.0, false});
+            const Summary cv = Summarise(cvRows, m, "training, 5-fold", {1.0, false});
+            const Summary inL =
+                Summarise(cvRows, m, "training, in-sample", {1.0, false}, lecturePairs);
+            const Summary cvL =
+                Summarise(cvRows, m, "training, 5-fold", {1.0, false}, lecturePairs);
+            if (in.mean == 0.0 && cv.mean == 0.0)
+            {
+                continue;
+            }
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "  %-10s in-sample %5.2f  5-fold %5.2f   (A/F2/F11->D65: %5.2f, %5.2f)\n",
+                          m.c_str(), in.mean, cv.mean, inL.mean, cvL.mean);
             out << line;
         }
     }
@@ -283,18 +395,27 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     if (!o.json.empty())
     {
         nlohmann::ordered_json j;
-        j["rows"] = nlohmann::ordered_json::array();
-        for (const AccuracyRow& r : rows)
+        const auto toJson = [](const std::vector<AccuracyRow>& from)
         {
-            j["rows"].push_back({{"method", r.method},
-                                 {"from", r.from},
-                                 {"to", r.to},
-                                 {"set", r.set},
-                                 {"mean", r.mean},
-                                 {"p95", r.p95},
-                                 {"max", r.max},
-                                 {"worst_sample", r.worstSample}});
-        }
+            nlohmann::ordered_json a = nlohmann::ordered_json::array();
+            for (const AccuracyRow& r : from)
+            {
+                a.push_back({{"method", r.method},
+                             {"from", r.from},
+                             {"to", r.to},
+                             {"set", r.set},
+                             {"exposure", r.exposure},
+                             {"shipped", r.shipped},
+                             {"mean", r.mean},
+                             {"p95", r.p95},
+                             {"max", r.max},
+                             {"worst_sample", r.worstSample}});
+            }
+            return a;
+        };
+        j["rows"] = toJson(rows);
+        j["cross_validation"] = toJson(cvRows);
+        j["floor"] = toJson(floorRows);
         j["cost"] = nlohmann::ordered_json::array();
         for (const CostRow& c : cost)
         {
@@ -350,6 +471,12 @@ void AddAccuracyCommand(CLI::App& app)
     cmd->add_option("--json", o->json, "Write all rows and costs as JSON to FILE (- for stdout)");
     cmd->add_option("--plot", o->plot, "Draw accuracy against cost into FILE.png or FILE.svg");
     cmd->add_flag("--no-cost", o->noCost, "Skip the timing");
+    cmd->add_option("--lut-size", o->lutSize,
+                    "3D LUT size of the shipped non-linear looks (as `config --lut-size`)")
+        ->check(CLI::Range(2, 129))
+        ->capture_default_str();
+    cmd->add_flag("--ideal-only", o->idealOnly,
+                  "Measure only the methods' exact forms, not the OCIO transforms that ship");
     cmd->callback([o] { RunAccuracy(*o); });
 }
 

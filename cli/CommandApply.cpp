@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight apply`: re-light images (and frame sequences) through OpenImageIO.
+#include <functional>
 #include <iostream>
 #include <memory>
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/ImageApply.h"
+#include "plugin/OcioTransforms.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 
@@ -38,6 +40,9 @@ void RunApply(const ApplyOptions& o)
 {
     OCIO::ConstProcessorRcPtr processor;
     std::string note;
+    // rootpoly without a config is applied natively: a few ns a pixel, no
+    // LUT between the fit and the pixels.
+    std::function<void(float*, size_t)> native;
     if (!o.look.empty())
     {
         if (o.config.empty())
@@ -68,12 +73,37 @@ void RunApply(const ApplyOptions& o)
         {
             throw Exception("give --look NAME --config DIR, or --from S1 --to S2 [--method M]");
         }
-        OCIO::GroupTransformRcPtr t = RelightTransform(o.relight, nullptr);
-        processor = OCIO::Config::CreateRaw()->getProcessor(t);
-        note = t->getFormatMetadata().getName();
+        const MethodSpec method = ParseMethod(o.relight.method);
+        if (method.method == ChangeMethod::ROOTPOLY)
+        {
+            const NamedSpectrum from = ResolveIlluminant(o.relight.from);
+            const NamedSpectrum to = ResolveIlluminant(o.relight.to);
+            const auto relighter = std::make_shared<Relighter>(
+                Light{from.name, from.spectrum}, Light{to.name, to.spectrum}, method,
+                FindRgbSpace(o.relight.workingSpace));
+            native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
+            note = LookName(method.name, from.name, to.name) + " (native)";
+        }
+        else
+        {
+            OCIO::GroupTransformRcPtr t = RelightTransform(o.relight, nullptr);
+            processor = OCIO::Config::CreateRaw()->getProcessor(t);
+            note = t->getFormatMetadata().getName();
+        }
     }
-    const OCIO::ConstCPUProcessorRcPtr cpu = processor->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
+    const auto applyOne = [&](const std::string& in, const std::string& out)
+    {
+        if (native)
+        {
+            ApplyToImage(native, in, out, o.threads, note);
+        }
+        else
+        {
+            ApplyToImage(processor->getOptimizedCPUProcessor(
+                             OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT),
+                         in, out, o.threads, note);
+        }
+    };
 
     if (o.frames.empty())
     {
@@ -81,7 +111,7 @@ void RunApply(const ApplyOptions& o)
         {
             throw Exception("'" + o.in + "' is a frame pattern: give --frames FIRST-LAST");
         }
-        ApplyToImage(cpu, o.in, o.out, o.threads, note);
+        applyOne(o.in, o.out);
         return;
     }
     if (!HasFramePattern(o.in) || !HasFramePattern(o.out))
@@ -91,8 +121,7 @@ void RunApply(const ApplyOptions& o)
     const std::vector<int> frames = ParseFrameRange(o.frames);
     for (int f : frames)
     {
-        ApplyToImage(cpu, ExpandFramePattern(o.in, f), ExpandFramePattern(o.out, f), o.threads,
-                     note);
+        applyOne(ExpandFramePattern(o.in, f), ExpandFramePattern(o.out, f));
     }
     std::cout << "Applied " << note << " to " << frames.size() << " frames\n";
 }

@@ -17,6 +17,12 @@ namespace bandlight::cli
 
 namespace
 {
+/// The 3D LUT size `config` gives non-linear looks (ConfigOptions::lutSize).
+constexpr int kShippedLutSize = 65;
+}  // namespace
+
+namespace
+{
 using Clock = std::chrono::steady_clock;
 
 template <typename F>
@@ -99,7 +105,9 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
             }
             continue;
         }
-        const OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(L("A"), L("D65"), method, ws);
+        // As a config's look: the LUT size configs use for non-linear methods.
+        const OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
+            L("A"), L("D65"), method, ws, Observer::CIE1931_2DEG, kShippedLutSize);
         const OCIO::ConstCPUProcessorRcPtr cpu =
             OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
                 OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
@@ -108,8 +116,10 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
             std::vector<float> px = source;
             const double s = BestSeconds(
                 [&] { ApplyToBuffer(cpu, px.data(), 1920, pixels / 1920, 4, rgb, threads); });
-            rows.push_back({name, method.isLinear() ? "ocio-matrix" : "ocio-lut33", threads,
-                            s * 1e9 / double(pixels)});
+            rows.push_back({name,
+                            method.isLinear() ? "ocio-matrix"
+                                              : "ocio-lut" + std::to_string(kShippedLutSize),
+                            threads, s * 1e9 / double(pixels)});
         }
         if (!method.isLinear())
         {
@@ -128,7 +138,9 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                         direct.apply(px.data(), size_t(n), threads);
                     },
                     1);
-                rows.push_back({name, "direct-fit", threads, s * 1e9 / double(n)});
+                rows.push_back({name,
+                                method.method == ChangeMethod::ROOTPOLY ? "native" : "direct-fit",
+                                threads, s * 1e9 / double(n)});
             }
         }
     }
@@ -143,6 +155,8 @@ std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)
         {"fit3x3: fitting one pair (108 training remittances)",
          BestSeconds([&]
                      { IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("fit3x3"), ws); })});
+    out.push_back({"rootpoly: fitting one pair (205 training remittances)",
+                   BestSeconds([&] { Relighter(L("A"), L("D65"), ParseMethod("rootpoly"), ws); })});
     const Relighter up(L("A"), L("D65"), ParseMethod("upsample"), ws);
     for (int size : {17, 33, 65})
     {

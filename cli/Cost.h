@@ -11,7 +11,7 @@ namespace bandlight::cli
 struct CostRow
 {
     std::string method;
-    std::string form;  ///< "ocio-matrix", "ocio-lut33", "direct-fit", "spectral-81"
+    std::string form;  ///< "ocio-matrix", "ocio-lut65", "direct-fit", "native", "spectral-81"
     int threads = 1;
     double nsPerPixel = 0.0;
 };

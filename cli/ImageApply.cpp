@@ -60,6 +60,48 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
     }
 }
 
+void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
+                  const std::string& in, const std::string& out, int threads,
+                  const std::string& note)
+{
+    const std::string error = ImageFiles().transform(
+        in, out,
+        [&](float* pixels, long width, long height, int channels, const int* rgb)
+        {
+            ParallelFor(size_t(std::max(height, 0L)), threads,
+                        [&](size_t y0, size_t y1)
+                        {
+                            std::vector<float> row(3 * size_t(width));
+                            for (size_t y = y0; y < y1; ++y)
+                            {
+                                float* p = pixels + y * size_t(width) * size_t(channels);
+                                for (long x = 0; x < width; ++x)
+                                {
+                                    for (int c = 0; c < 3; ++c)
+                                    {
+                                        row[3 * size_t(x) + size_t(c)] =
+                                            p[size_t(x) * size_t(channels) + size_t(rgb[c])];
+                                    }
+                                }
+                                rgbFunction(row.data(), size_t(width));
+                                for (long x = 0; x < width; ++x)
+                                {
+                                    for (int c = 0; c < 3; ++c)
+                                    {
+                                        p[size_t(x) * size_t(channels) + size_t(rgb[c])] =
+                                            row[3 * size_t(x) + size_t(c)];
+                                    }
+                                }
+                            }
+                        });
+        },
+        note);
+    if (!error.empty())
+    {
+        throw Exception(error);
+    }
+}
+
 void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
                 const std::vector<std::string>& channelNames, ImageDescription description,
                 PixelType type, OutputSet* outputs)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,14 @@ namespace OCIO = OCIO_NAMESPACE;
 /// naming the file on any read or write failure.
 void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
                   const std::string& out, int threads, const std::string& note);
+
+/// The same with any per-pixel function on interleaved RGB triples
+/// (bandlight's native rootpoly): the R, G, B channels are gathered, passed
+/// to `rgbFunction` in blocks of rows on `threads` threads, and scattered
+/// back; alpha and other channels pass through.
+void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
+                  const std::string& in, const std::string& out, int threads,
+                  const std::string& note);
 
 /// Applies a processor in place to an interleaved float image with RGB in
 /// channels rgb[0..2] and `channels` channels per pixel, split by rows over

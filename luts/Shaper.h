@@ -37,16 +37,14 @@ struct ShaperSpec
     double breakLinear = 1.0 / 32768.0;  // 2^-15 ≈ 3.05e-5
     double maxLinear = 131072.0;         // 2^17: covers half-float's 65504 with a stop to spare
 
-    /// The shaper for LUTs of non-linear transforms (upsample): the break at
-    /// 2^-8, so the log2 segment spans 25 rather than 32 stops and the
-    /// lattice is finer where colours are (0.8 stop a cell at 33³, against
-    /// 1.8); the kink then lies at 0.004, where greys lose their exactness.
-    static ShaperSpec ForNonLinear()
-    {
-        ShaperSpec s;
-        s.breakLinear = 1.0 / 256.0;
-        return s;
-    }
+    /// The shaper for LUTs of non-linear transforms (upsample, rootpoly):
+    /// the same log2 shaper, break at 2^-15. Both methods are exposure
+    /// invariant (f(k·x) = k·f(x)), and in log2 coordinates scaling the
+    /// pixel shifts input and output by the same amount: the LUT then errs
+    /// alike at every exposure whose channels lie above the break (a 20 %
+    /// grey's shadows 8 stops down are at 7e-4, far above 3e-5). An
+    /// earlier break at 2^-8 made shadows the worst case.
+    static ShaperSpec ForNonLinear() { return ShaperSpec(); }
 
     /// This shaper with minLinear moved (by a few per cent, never above
     /// zero) so that linear 0 falls exactly on a node of a size-point

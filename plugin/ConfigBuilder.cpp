@@ -198,9 +198,9 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                 }
                 else
                 {
-                    transform =
-                        AsLutFile(package, name,
-                                  IlluminantChangeTransform(from, to, method, working, o.observer));
+                    transform = AsLutFile(package, name,
+                                          IlluminantChangeTransform(from, to, method, working,
+                                                                    o.observer, o.lutSize));
                 }
                 OCIO::LookRcPtr look = OCIO::Look::Create();
                 look->setName(name.c_str());

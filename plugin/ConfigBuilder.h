@@ -21,6 +21,10 @@ struct ConfigOptions
     std::vector<Light> lights;
     std::vector<std::string> methods;
     Observer observer = Observer::CIE1931_2DEG;
+    /// Lattice size of the non-linear looks' 3D LUTs (upsample, rootpoly):
+    /// 65³ keeps the LUT's own error near 0.05 ΔE00 where 33³ adds up to
+    /// 0.25 (README, "What accuracy costs"); a 65³ CLF file is about 12 MB.
+    int lutSize = 65;
     /// Where the config will be written (ExtendConfig: the base's relative
     /// search paths are rewritten to reach the base's folder from here).
     std::string outputDir;

@@ -72,6 +72,9 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
         return Group(relighter->matrix(), name, description);
     }
     const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(lutSize);
+    // upsample fits every pixel at one level: neighbouring lattice nodes on
+    // one ray through black share their fit (the cache), so a 33^3 lattice
+    // needs about a tenth of the fits.
     OCIO::GroupTransformRcPtr g = LatticeTransform(
         [relighter](float* rgb, size_t count) { relighter->apply(rgb, count); }, shaper, lutSize);
     OCIO::FormatMetadata& md = g->getFormatMetadata();

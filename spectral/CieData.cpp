@@ -85,6 +85,12 @@ const std::vector<NamedSpectrum>& TestColourSamples()
     return tcs;
 }
 
+const std::vector<NamedSpectrum>& Rawtoaces190()
+{
+    static const std::vector<NamedSpectrum> patches = ReadEmbedded("ref/rawtoaces_190.csv");
+    return patches;
+}
+
 const std::vector<NamedSpectrum>& TabulatedIlluminants()
 {
     static const std::vector<NamedSpectrum> all = []

@@ -46,6 +46,11 @@ const DaylightBasis& GetDaylightBasis();
 /// radiance factors 360–830 nm at 5 nm, in order.
 const std::vector<NamedSpectrum>& TestColourSamples();
 
+/// The 190 measured training reflectances published with the Academy's
+/// rawtoaces (patch1 … patch190, 380–780 nm at 5 nm; source in
+/// data/ref/rawtoaces_190.csv). Fitting data for rootpoly, never a test set.
+const std::vector<NamedSpectrum>& Rawtoaces190();
+
 /// The tabulated illuminants carried in data/: A, C, D50, D55, D65, E,
 /// F1–F12, in that order, each on its own table's range at 5 nm.
 const std::vector<NamedSpectrum>& TabulatedIlluminants();

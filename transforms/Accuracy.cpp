@@ -36,19 +36,66 @@ double Percentile(std::vector<double> values, double p)
     return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
-std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
-                                         const std::function<void(double)>& progress)
+namespace
 {
-    const RgbSpace& working = FindRgbSpace(o.workingSpace);
-    std::vector<MethodSpec> methods;
-    for (const std::string& m : o.methods)
+
+/// ΔE00 of predicted against reference colours (working RGB under `to`).
+struct Errors
+{
+    double mean = 0.0, p95 = 0.0, max = 0.0;
+    std::string worst;
+};
+
+Errors Score(const SurfaceRenderer& to, const std::vector<Vec3>& predicted,
+             const std::vector<Vec3>& reference, const std::vector<NamedSpectrum>& names)
+{
+    const Vec3 white = to.rgbToXyz() * to.white();
+    std::vector<double> de;
+    Errors e;
+    double worst = -1.0;
+    for (size_t k = 0; k < reference.size(); ++k)
     {
-        methods.push_back(ParseMethod(m));
+        const Vec3 p = predicted[k].allFinite() ? predicted[k] : Vec3(1e6, -1e6, 1e6);
+        const double d = DeltaE2000(XyzToLab(to.rgbToXyz() * p, white),
+                                    XyzToLab(to.rgbToXyz() * reference[k], white));
+        de.push_back(d);
+        e.mean += d;
+        if (d > worst)
+        {
+            worst = d;
+            e.worst = names[k].name;
+        }
     }
-    struct Pair
-    {
-        size_t from, to;
-    };
+    e.mean = de.empty() ? 0.0 : e.mean / double(de.size());
+    e.p95 = Percentile(de, 0.95);
+    e.max = std::max(worst, 0.0);
+    return e;
+}
+
+AccuracyRow MakeRow(const std::string& method, const Light& from, const Light& to,
+                    const std::string& set, double exposure, bool shipped, const Errors& e)
+{
+    AccuracyRow r;
+    r.method = method;
+    r.from = from.name;
+    r.to = to.name;
+    r.set = set;
+    r.exposure = exposure;
+    r.shipped = shipped;
+    r.mean = e.mean;
+    r.p95 = e.p95;
+    r.max = e.max;
+    r.worstSample = e.worst;
+    return r;
+}
+
+struct Pair
+{
+    size_t from, to;
+};
+
+std::vector<Pair> Pairs(const AccuracyOptions& o)
+{
     std::vector<Pair> pairs;
     for (size_t i = 0; i < o.lights.size(); ++i)
     {
@@ -60,6 +107,49 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
             }
         }
     }
+    return pairs;
+}
+
+/// Runs `perPair(pair, rows)` for every pair on all cores, rows in pair order.
+std::vector<AccuracyRow> ForEachPair(
+    const AccuracyOptions& o, const std::function<void(double)>& progress,
+    const std::function<void(const Light&, const Light&, std::vector<AccuracyRow>&)>& perPair)
+{
+    const std::vector<Pair> pairs = Pairs(o);
+    std::vector<std::vector<AccuracyRow>> byPair(pairs.size());
+    std::atomic<size_t> next{0}, done{0};
+    ParallelRun(0, pairs.size(),
+                [&]
+                {
+                    for (size_t p; (p = next++) < pairs.size();)
+                    {
+                        perPair(o.lights[pairs[p].from], o.lights[pairs[p].to], byPair[p]);
+                        const size_t d = ++done;
+                        if (progress)
+                        {
+                            progress(double(d) / double(pairs.size()));
+                        }
+                    }
+                });
+    std::vector<AccuracyRow> rows;
+    for (auto& r : byPair)
+    {
+        rows.insert(rows.end(), r.begin(), r.end());
+    }
+    return rows;
+}
+
+}  // namespace
+
+std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
+                                         const std::function<void(double)>& progress)
+{
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    std::vector<MethodSpec> methods;
+    for (const std::string& m : o.methods)
+    {
+        methods.push_back(ParseMethod(m));
+    }
     // Remittances sampled once.
     std::vector<std::vector<SurfaceRenderer::Samples>> samples(o.sets.size());
     for (size_t s = 0; s < o.sets.size(); ++s)
@@ -69,72 +159,174 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
             samples[s].push_back(SurfaceRenderer::Sample(r.spectrum));
         }
     }
-
-    const size_t perPair = methods.size() * o.sets.size();
-    std::vector<AccuracyRow> rows(pairs.size() * perPair);
-    std::atomic<size_t> next{0}, done{0};
-    auto work = [&]
-    {
-        for (size_t p; (p = next++) < pairs.size();)
+    return ForEachPair(
+        o, progress,
+        [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
         {
-            const Light& from = o.lights[pairs[p].from];
-            const Light& to = o.lights[pairs[p].to];
             const SurfaceRenderer r1(from.spectrum, working, o.observer);
             const SurfaceRenderer r2(to.spectrum, working, o.observer);
-            const Vec3 white = r2.rgbToXyz() * r2.white();
-            for (size_t m = 0; m < methods.size(); ++m)
+            for (const MethodSpec& method : methods)
             {
-                const MethodSpec& method = methods[m];
-                const bool spectral = method.method == ChangeMethod::SPECTRAL;
-                std::unique_ptr<Relighter> relight;
-                if (!spectral)
+                if (method.method == ChangeMethod::SPECTRAL)
                 {
-                    relight = std::make_unique<Relighter>(from, to, method, working, o.observer);
+                    for (size_t s = 0; s < o.sets.size(); ++s)
+                    {
+                        for (const double k : o.exposures)
+                        {
+                            rows.push_back(
+                                MakeRow(method.name, from, to, o.sets[s].name, k, false, Errors{}));
+                        }
+                    }
+                    continue;
+                }
+                const auto relight =
+                    std::make_shared<Relighter>(from, to, method, working, o.observer);
+                std::vector<std::pair<bool, PixelBatch>> forms = {
+                    {false, [relight](float* rgb, size_t n) { relight->apply(rgb, n, 1); }}};
+                if (o.shipped)
+                {
+                    if (PixelBatch shipped = o.shipped(from, to, method))
+                    {
+                        forms.push_back({true, shipped});
+                    }
                 }
                 for (size_t s = 0; s < o.sets.size(); ++s)
                 {
-                    std::vector<double> de;
-                    double worst = -1.0;
-                    std::string worstName;
-                    for (size_t k = 0; k < samples[s].size(); ++k)
+                    const size_t n = samples[s].size();
+                    std::vector<Vec3> reference(n);
+                    std::vector<float> buffer(3 * n * o.exposures.size());
+                    for (size_t i = 0; i < n; ++i)
                     {
-                        const Vec3 reference = r2.render(samples[s][k]);
-                        const Vec3 predicted =
-                            spectral ? reference : relight->apply(r1.render(samples[s][k]));
-                        const double e = DeltaE2000(XyzToLab(r2.rgbToXyz() * predicted, white),
-                                                    XyzToLab(r2.rgbToXyz() * reference, white));
-                        de.push_back(e);
-                        if (e > worst)
+                        reference[i] = r2.render(samples[s][i]);
+                    }
+                    for (const auto& [shipped, apply] : forms)
+                    {
+                        for (size_t e = 0; e < o.exposures.size(); ++e)
                         {
-                            worst = e;
-                            worstName = o.sets[s].samples[k].name;
+                            for (size_t i = 0; i < n; ++i)
+                            {
+                                const Vec3 c = o.exposures[e] * r1.render(samples[s][i]);
+                                for (int ch = 0; ch < 3; ++ch)
+                                {
+                                    buffer[3 * (e * n + i) + size_t(ch)] = float(c[ch]);
+                                }
+                            }
+                        }
+                        apply(buffer.data(), n * o.exposures.size());
+                        for (size_t e = 0; e < o.exposures.size(); ++e)
+                        {
+                            std::vector<Vec3> predicted(n);
+                            for (size_t i = 0; i < n; ++i)
+                            {
+                                const float* p = &buffer[3 * (e * n + i)];
+                                predicted[i] = Vec3(p[0], p[1], p[2]) / o.exposures[e];
+                            }
+                            rows.push_back(MakeRow(
+                                method.name, from, to, o.sets[s].name, o.exposures[e], shipped,
+                                Score(r2, predicted, reference, o.sets[s].samples)));
                         }
                     }
-                    AccuracyRow& row = rows[p * perPair + m * o.sets.size() + s];
-                    row.method = method.name;
-                    row.from = from.name;
-                    row.to = to.name;
-                    row.set = o.sets[s].name;
-                    double sum = 0.0;
-                    for (double e : de)
-                    {
-                        sum += e;
-                    }
-                    row.mean = de.empty() ? 0.0 : sum / double(de.size());
-                    row.p95 = Percentile(de, 0.95);
-                    row.max = std::max(worst, 0.0);
-                    row.worstSample = worstName;
                 }
             }
-            const size_t d = ++done;
-            if (progress)
-            {
-                progress(double(d) / double(pairs.size()));
-            }
+        });
+}
+
+std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
+{
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    std::vector<MethodSpec> methods;
+    for (const std::string& m : o.methods)
+    {
+        const MethodSpec spec = ParseMethod(m);
+        if (spec.method == ChangeMethod::FIT3X3 || spec.method == ChangeMethod::ROOTPOLY)
+        {
+            methods.push_back(spec);
         }
-    };
-    ParallelRun(0, pairs.size(), work);
-    return rows;
+    }
+    if (methods.empty() || folds < 2)
+    {
+        return {};
+    }
+    const std::string inSample = "training, in-sample";
+    const std::string crossName = "training, " + std::to_string(folds) + "-fold";
+    return ForEachPair(
+        o, {},
+        [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
+        {
+            const SurfaceRenderer r1(from.spectrum, working, o.observer);
+            const SurfaceRenderer r2(to.spectrum, working, o.observer);
+            for (const MethodSpec& method : methods)
+            {
+                const std::vector<NamedSpectrum>& all = method.method == ChangeMethod::FIT3X3
+                                                            ? TrainingSet().samples
+                                                            : RootPolynomialTraining();
+                const auto evaluate = [&](const MethodSpec& fitted,
+                                          const std::vector<NamedSpectrum>& test,
+                                          std::vector<Vec3>& predicted, std::vector<Vec3>& ref)
+                {
+                    const Relighter relight(from, to, fitted, working, o.observer);
+                    for (const NamedSpectrum& t : test)
+                    {
+                        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+                        predicted.push_back(relight.apply(r1.render(r)));
+                        ref.push_back(r2.render(r));
+                    }
+                };
+                {
+                    MethodSpec fitted = method;
+                    fitted.training = all;
+                    std::vector<Vec3> predicted, ref;
+                    evaluate(fitted, all, predicted, ref);
+                    rows.push_back(MakeRow(method.name, from, to, inSample, 1.0, false,
+                                           Score(r2, predicted, ref, all)));
+                }
+                // Folds by position (every folds-th sample), the same for every pair.
+                std::vector<Vec3> predicted, ref;
+                std::vector<NamedSpectrum> order;
+                for (int f = 0; f < folds; ++f)
+                {
+                    MethodSpec fitted = method;
+                    std::vector<NamedSpectrum> test;
+                    for (size_t i = 0; i < all.size(); ++i)
+                    {
+                        (int(i % size_t(folds)) == f ? test : fitted.training).push_back(all[i]);
+                    }
+                    evaluate(fitted, test, predicted, ref);
+                    order.insert(order.end(), test.begin(), test.end());
+                }
+                rows.push_back(MakeRow(method.name, from, to, crossName, 1.0, false,
+                                       Score(r2, predicted, ref, order)));
+            }
+        });
+}
+
+std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& o)
+{
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    return ForEachPair(o, {},
+                       [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
+                       {
+                           const SurfaceRenderer r1(from.spectrum, working, o.observer);
+                           const SurfaceRenderer r2(to.spectrum, working, o.observer);
+                           for (const ReflectanceSet& set : o.sets)
+                           {
+                               const Mat3 m = FitLabMatrix(r1, r2, set.samples);
+                               const RootPolynomial rp = FitRootPolynomial(r1, r2, set.samples, 2);
+                               std::vector<Vec3> by3x3, byRoot, ref;
+                               for (const NamedSpectrum& t : set.samples)
+                               {
+                                   const SurfaceRenderer::Samples r =
+                                       SurfaceRenderer::Sample(t.spectrum);
+                                   by3x3.push_back(m * r1.render(r));
+                                   byRoot.push_back(rp.apply(r1.render(r)));
+                                   ref.push_back(r2.render(r));
+                               }
+                               rows.push_back(MakeRow("floor-3x3", from, to, set.name, 1.0, false,
+                                                      Score(r2, by3x3, ref, set.samples)));
+                               rows.push_back(MakeRow("floor-rootpoly", from, to, set.name, 1.0,
+                                                      false, Score(r2, byRoot, ref, set.samples)));
+                           }
+                       });
 }
 
 }  // namespace bandlight

@@ -11,19 +11,31 @@
 namespace bandlight
 {
 
-/// ΔE00 of one method for one illuminant pair over one reflectance set,
-/// against the spectral reference (the remittances rendered under `to`).
+/// ΔE00 of one method for one illuminant pair over one reflectance set at
+/// one exposure, against the spectral reference (the remittances rendered
+/// under `to`).
 struct AccuracyRow
 {
     std::string method;
     std::string from;
     std::string to;
     std::string set;
+    double exposure = 1.0;  ///< k: the pixel k·c went in, the result was divided by k
+    bool shipped = false;   ///< through the form a user gets (OCIO processor, LUT included)
     double mean = 0.0;
     double p95 = 0.0;
     double max = 0.0;
     std::string worstSample;
 };
+
+/// A method's form applied in place to interleaved float RGB.
+using PixelBatch = std::function<void(float* rgb, size_t count)>;
+
+/// The shipped form of a method for one pair — what a config's look does
+/// (its OCIO processor: guard and matrix, or shaper, 3D LUT and inverse
+/// shaper). Supplied by the layer that knows OCIO; nullptr: no shipped form.
+using ShippedFactory =
+    std::function<PixelBatch(const Light& from, const Light& to, const MethodSpec& method)>;
 
 struct AccuracyOptions
 {
@@ -32,6 +44,10 @@ struct AccuracyOptions
     std::vector<ReflectanceSet> sets;
     std::string workingSpace = "acescg";
     Observer observer = Observer::CIE1931_2DEG;
+    /// The levels k the colours are seen at: 2^-8 … 2^4 of the white.
+    std::vector<double> exposures = {1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0, 4.0, 16.0};
+    /// When set, every method is measured in its shipped form too.
+    ShippedFactory shipped;
 };
 
 /// The default comparison: A, C, D50, D65, E, F1–F12; every image method;
@@ -39,12 +55,27 @@ struct AccuracyOptions
 /// (100 smooth random remittances, none of them in the training set).
 AccuracyOptions DefaultAccuracyOptions();
 
-/// Measures every (method, pair, set). For each remittance: its colour under
-/// `from` (working RGB, white Y = 1) goes through the method and is
-/// compared in CIEDE2000 — L*a*b* relative to `to`'s white — with its
-/// colour rendered under `to`. `progress` (0–1) is called as pairs finish.
+/// Measures every (method, pair, set, exposure, form). For each remittance:
+/// its colour under `from` (working RGB, white Y = 1) times k goes through
+/// the method, is divided by k and is compared in CIEDE2000 — L*a*b*
+/// relative to `to`'s white — with its colour rendered under `to`. An
+/// exposure-invariant method gives the same figure at every k. `progress`
+/// (0–1) is called as pairs finish.
 std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& options,
                                          const std::function<void(double)>& progress = {});
+
+/// How well the fitted methods (fit3x3, rootpoly, rootpoly3 among
+/// `options.methods`) generalise: for every pair, each method fitted on its
+/// own training set and measured on it (set "training, in-sample"), and
+/// `folds`-fold cross-validated — fitted on all folds but one, measured on
+/// that one (set "training, N-fold"). Ideal forms, k = 1.
+std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& options, int folds = 5);
+
+/// The floor of pixel-only methods on each set: per pair, the best 3×3
+/// ("floor-3x3") and the best degree-2 root polynomial ("floor-rootpoly")
+/// fitted in CIELAB on that very set and measured on it, k = 1. No method
+/// that sees only the pixel does much better on that set.
+std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& options);
 
 /// Percentile p (0–1) of values, nearest rank; 0 for none.
 double Percentile(std::vector<double> values, double p);

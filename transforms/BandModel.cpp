@@ -160,9 +160,9 @@ void CheckBandCondition(const BandSet& bands, double condition)
     {
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.3g", condition);
-        throw Exception("band matrix for bands " + bands.describe() + " nm is ill-conditioned: " +
-                        "condition number " + buf + " exceeds the limit " +
-                        std::to_string(int(MAX_BAND_CONDITION)) +
+        throw Exception("band matrix for bands " + bands.describe() +
+                        " nm is ill-conditioned: " + "condition number " + buf +
+                        " exceeds the limit " + std::to_string(int(MAX_BAND_CONDITION)) +
                         " (band values would amplify pixel errors that much); widen the bands "
                         "the matching functions barely see");
     }

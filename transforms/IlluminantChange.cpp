@@ -74,17 +74,23 @@ MethodSpec ParseMethod(const std::string& name)
     MethodSpec m;
     m.name = n;
     static const std::pair<const char*, ChangeMethod> kFixed[] = {
-        {"none", ChangeMethod::NONE},         {"vonkries", ChangeMethod::VON_KRIES},
-        {"bradford", ChangeMethod::BRADFORD}, {"cat02", ChangeMethod::CAT02},
-        {"fit3x3", ChangeMethod::FIT3X3},     {"prefilter", ChangeMethod::PREFILTER},
-        {"metamer", ChangeMethod::METAMER},   {"upsample", ChangeMethod::UPSAMPLE},
-        {"spectral", ChangeMethod::SPECTRAL},
+        {"none", ChangeMethod::NONE},          {"vonkries", ChangeMethod::VON_KRIES},
+        {"bradford", ChangeMethod::BRADFORD},  {"cat02", ChangeMethod::CAT02},
+        {"fit3x3", ChangeMethod::FIT3X3},      {"prefilter", ChangeMethod::PREFILTER},
+        {"metamer", ChangeMethod::METAMER},    {"upsample", ChangeMethod::UPSAMPLE},
+        {"spectral", ChangeMethod::SPECTRAL},  {"rootpoly", ChangeMethod::ROOTPOLY},
+        {"rootpoly2", ChangeMethod::ROOTPOLY}, {"rootpoly3", ChangeMethod::ROOTPOLY},
     };
     const auto fixed = std::find_if(std::begin(kFixed), std::end(kFixed),
                                     [&](const auto& f) { return n == f.first; });
     if (fixed != std::end(kFixed))
     {
         m.method = fixed->second;
+        if (m.method == ChangeMethod::ROOTPOLY)
+        {
+            m.degree = n == "rootpoly3" ? 3 : 2;
+            m.name = m.degree == 3 ? "rootpoly3" : "rootpoly";
+        }
     }
     else if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
     {
@@ -128,7 +134,8 @@ MethodSpec ParseMethod(const std::string& name)
     {
         throw Exception("unknown method '" + name +
                         "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
-                        "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, spectral)");
+                        "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
+                        "rootpoly3, spectral)");
     }
     return m;
 }
@@ -142,9 +149,9 @@ const std::vector<std::string>& LinearMethodNames()
 
 const std::vector<std::string>& AllMethodNames()
 {
-    static const std::vector<std::string> names = {"none",   "vonkries",  "bradford", "cat02",
-                                                   "band3",  "band3-wp",  "band6",    "band6-wp",
-                                                   "fit3x3", "prefilter", "metamer",  "upsample"};
+    static const std::vector<std::string> names = {
+        "none",     "vonkries", "bradford",  "cat02",   "band3",    "band3-wp", "band6",
+        "band6-wp", "fit3x3",   "prefilter", "metamer", "upsample", "rootpoly", "rootpoly3"};
     return names;
 }
 
@@ -193,6 +200,12 @@ std::string DescribeMethod(const MethodSpec& m)
             return "A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika 2019 "
                    "sigmoid polynomial), re-lit spectrally: not linear, baked into a 3D LUT with a "
                    "log2 shaper.";
+        case ChangeMethod::ROOTPOLY:
+            return std::string("Root-polynomial regression of degree ") +
+                   (m.degree == 3 ? "3" : "2") +
+                   " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
+                   "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
+                   "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
         case ChangeMethod::SPECTRAL:
             return "The exact spectral answer for known remittances: the reference.";
     }
@@ -264,10 +277,11 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
             return MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
                                  SurfaceRenderer(to.spectrum, working, observer));
         case ChangeMethod::UPSAMPLE:
+        case ChangeMethod::ROOTPOLY:
         case ChangeMethod::SPECTRAL:
             throw Exception("method '" + method.name +
-                            "' is not one 3x3 matrix: apply it through a Relighter (upsample) or "
-                            "to spectra (spectral)");
+                            "' is not one 3x3 matrix: apply it through a Relighter (upsample, "
+                            "rootpoly) or to spectra (spectral)");
     }
     const BandSet& bands = method.bands;
     const BandBasis basis = MakeBandBasis(bands, observer);
@@ -346,6 +360,13 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
     m_linear = false;
     const SurfaceRenderer r1(from.spectrum, working, observer);
     const SurfaceRenderer r2(to.spectrum, working, observer);
+    if (method.method == ChangeMethod::ROOTPOLY)
+    {
+        m_rootpoly = std::make_unique<RootPolynomial>(FitRootPolynomial(
+            r1, r2, method.training.empty() ? RootPolynomialTraining() : method.training,
+            method.degree));
+        return;
+    }
     m_matrix = MetamerMatrix(r1, r2);
     m_spectral = std::make_unique<Spectral>(r1, r2);
 }
@@ -366,12 +387,32 @@ Vec3 GuardPixel(const Vec3& rgb) noexcept
 Vec3 Relighter::apply(const Vec3& rgb) const
 {
     const Vec3 in = GuardPixel(rgb);
+    if (m_rootpoly)
+    {
+        return m_rootpoly->apply(in);
+    }
     return m_linear ? Vec3(m_matrix * in)
                     : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
 }
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
 {
+    if (m_rootpoly)
+    {
+        // A few ns a pixel: the guard, then the vectorised root polynomial.
+        ParallelFor(count, count < 65536 ? 1 : threads,
+                    [&](size_t begin, size_t end)
+                    {
+                        for (size_t i = 3 * begin; i < 3 * end; ++i)
+                        {
+                            rgb[i] = std::isnan(rgb[i]) ? float(-PIXEL_GUARD)
+                                                        : std::clamp(rgb[i], float(-PIXEL_GUARD),
+                                                                     float(PIXEL_GUARD));
+                        }
+                        m_rootpoly->apply(rgb + 3 * begin, end - begin);
+                    });
+        return;
+    }
     auto run = [&](size_t begin, size_t end)
     {
         Upsampler::Coeffs warm = Upsampler::Coeffs::Zero();

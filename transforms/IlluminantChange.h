@@ -11,6 +11,7 @@
 #include "spectral/Spectrum.h"
 #include "spectral/SpectrumIO.h"
 #include "transforms/BandSet.h"
+#include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {
@@ -28,6 +29,7 @@ enum class ChangeMethod
     PREFILTER,  ///< von Kries in sharpened primaries (Ward & Eydelberg-Vileshin 2002)
     METAMER,    ///< smoothest remittance reproducing the pixel under S1, re-lit
     UPSAMPLE,   ///< sigmoid-polynomial remittance (Jakob & Hanika 2019), re-lit: not linear
+    ROOTPOLY,   ///< root-polynomial regression (Finlayson et al. 2015) on measured remittances
     SPECTRAL,   ///< the exact answer for known spectra: the reference, not an image transform
 };
 
@@ -36,23 +38,27 @@ enum class ChangeMethod
 /// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), any band set as
 /// "bands380-480-560-780" (edges in nm, "-wp" appended for the
 /// white-preserving form: no ':' or '=' so it can name looks), "fit3x3",
-/// "prefilter", "metamer", "upsample", "spectral".
+/// "prefilter", "metamer", "upsample", "rootpoly" (degree 2), "rootpoly3"
+/// (degree 3), "spectral".
 struct MethodSpec
 {
     ChangeMethod method = ChangeMethod::NONE;
     BandSet bands = BandSet::Lecture();
     std::string name;  ///< canonical name, used in look names: "band3-wp"
-    /// fit3x3's training remittances (empty: TrainingSet()).
+    /// fit3x3's and rootpoly's training remittances (empty: their defaults,
+    /// TrainingSet() and RootPolynomialTraining()).
     std::vector<NamedSpectrum> training;
+    int degree = 2;  ///< rootpoly's degree
 
     bool usesBands() const noexcept
     {
         return method == ChangeMethod::BAND || method == ChangeMethod::BAND_WP;
     }
-    /// One 3×3 in the working space (everything but upsample and spectral).
+    /// One 3×3 in the working space (everything but upsample, rootpoly and spectral).
     bool isLinear() const noexcept
     {
-        return method != ChangeMethod::UPSAMPLE && method != ChangeMethod::SPECTRAL;
+        return method != ChangeMethod::UPSAMPLE && method != ChangeMethod::ROOTPOLY &&
+               method != ChangeMethod::SPECTRAL;
     }
 };
 
@@ -122,6 +128,8 @@ public:
     /// The 3×3 of a linear method; for upsample, the linear fallback used
     /// for pixels with no positive channel (the metamer matrix).
     const Mat3& matrix() const noexcept { return m_matrix; }
+    /// rootpoly's fitted map (nullptr for other methods).
+    const RootPolynomial* rootPolynomial() const noexcept { return m_rootpoly.get(); }
 
     /// One pixel, working RGB under `from` → as if under `to`; any input,
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
@@ -135,6 +143,7 @@ private:
     bool m_linear = true;
     Mat3 m_matrix = Mat3::Identity();
     std::unique_ptr<Spectral> m_spectral;
+    std::unique_ptr<RootPolynomial> m_rootpoly;
 };
 
 /// Working RGB → band values (N × 3): the band-space conversion, B⁺ · M.

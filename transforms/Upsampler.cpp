@@ -45,7 +45,10 @@ double Upsampler::gamutScale(const Vec3& rgb) const noexcept
 {
     const Vec3& w = m_from.white();
     const double m = std::max({rgb.x() / w.x(), rgb.y() / w.y(), rgb.z() / w.z()});
-    return m > kGamutFraction ? m / kGamutFraction : 1.0;
+    // Every pixel is fitted at the canonical level: its level says nothing
+    // about the surface (it is irradiance × remittance), so the fit must not
+    // depend on it — which makes upsample exposure invariant.
+    return m > 0.0 ? m / kCanonicalLevel : 1.0;
 }
 
 Upsampler::Fit Upsampler::fit(const Vec3& rgb, const Coeffs& start) const
@@ -142,7 +145,7 @@ Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3&
     const double k = up.gamutScale(rgb);
     const Vec3 scaled = rgb / k;
     uint64_t key = 0;
-    if (cache && k > 1.0)
+    if (cache)
     {
         key = ShellKey(scaled, up.renderer().white());
         const auto it = cache->find(key);
@@ -166,7 +169,7 @@ Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3&
     {
         *warm = f.coeffs;
     }
-    if (cache && k > 1.0)
+    if (cache)
     {
         cache->emplace(key, f.coeffs);
     }

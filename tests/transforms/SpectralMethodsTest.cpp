@@ -122,5 +122,5 @@ TEST_CASE("spectral is the reference, not an image transform", "[transforms][met
                       Contains("needs the spectra of the surfaces"));
     CHECK_THROWS_WITH(IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("upsample"), Working()),
                       Contains("is not one 3x3"));
-    CHECK(AllMethodNames().size() == 12);
+    CHECK(AllMethodNames().size() == 14);
 }

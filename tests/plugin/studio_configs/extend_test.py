@@ -144,7 +144,8 @@ def main():
     for base_path, name, primaries in cases:
         out = os.path.join(work, "extended", name)
         r = subprocess.run([exe, "config", "--base", base_path, "--out", out, "--illuminants",
-                            "A,D65,F11", "--methods", "bradford,band3,upsample"],
+                            "A,D65,F11", "--methods", "bradford,band3,upsample",
+                            "--lut-size", "17"],
                            capture_output=True, text=True)
         check(r.returncode == 0, f"{name}: bandlight config --base exits 0 ({r.stderr.strip()})")
         if r.returncode != 0:
