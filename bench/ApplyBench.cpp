@@ -161,10 +161,9 @@ BENCHMARK(BM_NativeMatrixRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Us
 /// rootpoly as a config's look: log2 shaper, 65³ LUT, inverse shaper.
 static void BM_ApplyRootPolyLut65(benchmark::State& state)
 {
-    const OCIO::GroupTransformRcPtr t =
-        IlluminantChangeTransform({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                                  ParseMethod("rootpoly"), FindRgbSpace("acescg"),
-                                  Observer::CIE1931_2DEG, 65);
+    const OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
+        {"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}, ParseMethod("rootpoly"),
+        FindRgbSpace("acescg"), Observer::CIE1931_2DEG, 65);
     ApplyImage(state, OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
                           OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT));
 }

@@ -79,29 +79,6 @@ std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working
     return px;
 }
 
-/// What a render's EXR says about its pixels, in attributes that survive
-/// the file: OpenImageIO 2.4 keeps `oiio:ColorSpace` only in memory (its
-/// OpenEXR writer drops it and its reader says "Linear"), so the config's
-/// colour space name is also written as `bandlight:colorSpace`, and the
-/// Color Interop Forum's ID as `colorInteropID` (read by OpenImageIO 3.1+
-/// and Blender) — "data" for band values, which are not colours.
-void NameColourSpace(ImageDescription& d, const std::string& name, const std::string& space)
-{
-    static const std::pair<const char*, const char*> kInteropIds[] = {
-        {"acescg", "lin_ap1_scene"},    {"aces2065-1", "lin_ap0_scene"},
-        {"rec709", "lin_rec709_scene"}, {"rec2020", "lin_rec2020_scene"},
-        {"p3-d65", "lin_p3d65_scene"},  {"bands", "data"},
-    };
-    d.attributes.push_back({"bandlight:colorSpace", name});
-    for (const auto& [key, id] : kInteropIds)
-    {
-        if (space == key)
-        {
-            d.attributes.push_back({"colorInteropID", id});
-        }
-    }
-}
-
 /// Adds the render (and its sRGB preview) to `outputs`; returns what to
 /// report once the set is written.
 std::string Write(const RenderedImage& img, const std::string& out, const std::string& space,
@@ -114,7 +91,8 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
         d.colorSpace = "bands";
         d.attributes.push_back(
             {"bandlight:channels", "band values (radiometric), not RGB: " + bands.describe()});
-        NameColourSpace(d, "bands", "bands");
+        d.attributes.push_back({"bandlight:colorSpace", "bands"});
+        d.attributes.push_back({"colorInteropID", "data"});
         WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
                    PixelType::FLOAT, &outputs);
         report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
@@ -122,8 +100,7 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
         return report.str();
     }
     const RgbSpace& rgb = FindRgbSpace(space);
-    ImageDescription linear = LinearImageDescription(rgb, ColorSpaceName(rgb));
-    NameColourSpace(linear, ColorSpaceName(rgb), rgb.name);
+    const ImageDescription linear = LinearImageDescription(rgb, ColorSpaceName(rgb));
     WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
                linear, PixelType::FLOAT, &outputs);
     report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels

@@ -128,6 +128,23 @@ ImageDescription LinearImageDescription(const RgbSpace& space, const std::string
     const Chromaticities& c = space.chromaticities;
     d.chromaticities = {float(c.rx), float(c.ry), float(c.gx), float(c.gy),
                         float(c.bx), float(c.by), float(c.wx), float(c.wy)};
+    // OpenImageIO 2.4 drops oiio:ColorSpace when it writes an EXR (and
+    // reads every EXR back as "Linear"): the name is also kept as
+    // bandlight:colorSpace, and the Color Interop Forum ID as colorInteropID,
+    // which later OpenImageIO versions read.
+    static const std::pair<const char*, const char*> kInteropIds[] = {
+        {"acescg", "lin_ap1_scene"},    {"aces2065-1", "lin_ap0_scene"},
+        {"rec709", "lin_rec709_scene"}, {"rec2020", "lin_rec2020_scene"},
+        {"p3-d65", "lin_p3d65_scene"},
+    };
+    d.attributes.push_back({"bandlight:colorSpace", name});
+    for (const auto& [key, id] : kInteropIds)
+    {
+        if (space.name == key)
+        {
+            d.attributes.push_back({"colorInteropID", id});
+        }
+    }
     return d;
 }
 

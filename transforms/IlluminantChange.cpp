@@ -403,11 +403,13 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
         ParallelFor(count, count < 65536 ? 1 : threads,
                     [&](size_t begin, size_t end)
                     {
+                        // The guard: written so NaN goes to the lower bound
+                        // ((-G < NaN) is false) and the loop vectorises.
+                        const float lo = float(-PIXEL_GUARD), hi = float(PIXEL_GUARD);
                         for (size_t i = 3 * begin; i < 3 * end; ++i)
                         {
-                            rgb[i] = std::isnan(rgb[i]) ? float(-PIXEL_GUARD)
-                                                        : std::clamp(rgb[i], float(-PIXEL_GUARD),
-                                                                     float(PIXEL_GUARD));
+                            const float v = lo < rgb[i] ? rgb[i] : lo;
+                            rgb[i] = hi < v ? hi : v;
                         }
                         m_rootpoly->apply(rgb + 3 * begin, end - begin);
                     });

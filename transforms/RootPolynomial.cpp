@@ -170,52 +170,44 @@ void RootPolynomial::apply(float* rgb, size_t count) const noexcept
         }
         return;
     }
+    // Coefficients in registers; each block de-interleaved into channel
+    // arrays so the clamp, the three roots and the 18 products are plain
+    // loops over 8 lanes (SSE/AVX without intrinsics).
+    const float m00 = m_f[0][0], m01 = m_f[0][1], m02 = m_f[0][2], m03 = m_f[0][3], m04 = m_f[0][4],
+                m05 = m_f[0][5];
+    const float m10 = m_f[1][0], m11 = m_f[1][1], m12 = m_f[1][2], m13 = m_f[1][3], m14 = m_f[1][4],
+                m15 = m_f[1][5];
+    const float m20 = m_f[2][0], m21 = m_f[2][1], m22 = m_f[2][2], m23 = m_f[2][3], m24 = m_f[2][4],
+                m25 = m_f[2][5];
     constexpr size_t kBlock = 8;
-    const float(&m)[3][13] = m_f;
     size_t i = 0;
-    for (; i + kBlock <= count; i += kBlock)
+    for (; i < count; i += kBlock)
     {
-        float r[kBlock], g[kBlock], b[kBlock];
+        const size_t n = std::min(kBlock, count - i);
         float* p = rgb + 3 * i;
-        for (size_t k = 0; k < kBlock; ++k)
+        float r[kBlock] = {}, g[kBlock] = {}, b[kBlock] = {};
+        for (size_t k = 0; k < n; ++k)
         {
             r[k] = p[3 * k];
             g[k] = p[3 * k + 1];
             b[k] = p[3 * k + 2];
         }
-        float o[3][kBlock];
+        float o0[kBlock], o1[kBlock], o2[kBlock];
         for (size_t k = 0; k < kBlock; ++k)
         {
             const float rp = std::max(r[k], 0.0f), gp = std::max(g[k], 0.0f),
                         bp = std::max(b[k], 0.0f);
             const float rg = std::sqrt(rp * gp), gb = std::sqrt(gp * bp), rb = std::sqrt(rp * bp);
-            for (int c = 0; c < 3; ++c)
-            {
-                o[c][k] = m[c][0] * r[k] + m[c][1] * g[k] + m[c][2] * b[k] + m[c][3] * rg +
-                          m[c][4] * gb + m[c][5] * rb;
-            }
+            o0[k] = m00 * r[k] + m01 * g[k] + m02 * b[k] + m03 * rg + m04 * gb + m05 * rb;
+            o1[k] = m10 * r[k] + m11 * g[k] + m12 * b[k] + m13 * rg + m14 * gb + m15 * rb;
+            o2[k] = m20 * r[k] + m21 * g[k] + m22 * b[k] + m23 * rg + m24 * gb + m25 * rb;
         }
-        for (size_t k = 0; k < kBlock; ++k)
+        for (size_t k = 0; k < n; ++k)
         {
-            p[3 * k] = o[0][k];
-            p[3 * k + 1] = o[1][k];
-            p[3 * k + 2] = o[2][k];
+            p[3 * k] = o0[k];
+            p[3 * k + 1] = o1[k];
+            p[3 * k + 2] = o2[k];
         }
-    }
-    for (; i < count; ++i)
-    {
-        float* p = rgb + 3 * i;
-        const float rp = std::max(p[0], 0.0f), gp = std::max(p[1], 0.0f), bp = std::max(p[2], 0.0f);
-        const float rg = std::sqrt(rp * gp), gb = std::sqrt(gp * bp), rb = std::sqrt(rp * bp);
-        float o[3];
-        for (int c = 0; c < 3; ++c)
-        {
-            o[c] = m[c][0] * p[0] + m[c][1] * p[1] + m[c][2] * p[2] + m[c][3] * rg + m[c][4] * gb +
-                   m[c][5] * rb;
-        }
-        p[0] = o[0];
-        p[1] = o[1];
-        p[2] = o[2];
     }
 }
 
