@@ -117,14 +117,12 @@ static void BM_ApplyLattice33(benchmark::State& state)
 }
 BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// rootpoly applied natively (what `bandlight apply --method rootpoly` and
-/// the C++ API do): the guard and the vectorised degree-2 root polynomial
-/// on packed RGB, 1920×1080 pixels an iteration, against the bare 3×3 on
-/// the same packed buffer in the same run (BM_NativeMatrixRgb).
-static void BM_NativeRootPoly(benchmark::State& state)
+/// A method applied natively (Relighter: the guard, then the method) to a
+/// packed 1920×1080 RGB float buffer, on state.range(0) threads.
+static void ApplyNative(benchmark::State& state, const char* method)
 {
     const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                      ParseMethod("rootpoly"), FindRgbSpace("acescg"));
+                      ParseMethod(method), FindRgbSpace("acescg"));
     std::vector<float> px(size_t(1920) * 1080 * 3);
     for (size_t i = 0; i < px.size(); ++i)
     {
@@ -137,24 +135,19 @@ static void BM_NativeRootPoly(benchmark::State& state)
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * 1920 * 1080);
 }
+
+/// rootpoly applied natively (what `bandlight apply --method rootpoly` and
+/// the C++ API do): the guard and the vectorised degree-2 root polynomial.
+static void BM_NativeRootPoly(benchmark::State& state)
+{
+    ApplyNative(state, "rootpoly");
+}
 BENCHMARK(BM_NativeRootPoly)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// The band3 3×3 through the same native path (Relighter, guard included).
+/// The band3 3×3 through the same native path, in the same run.
 static void BM_NativeMatrixRgb(benchmark::State& state)
 {
-    const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                      ParseMethod("band3"), FindRgbSpace("acescg"));
-    std::vector<float> px(size_t(1920) * 1080 * 3);
-    for (size_t i = 0; i < px.size(); ++i)
-    {
-        px[i] = float((i * 2654435761u) % 1000u) * 0.001f;
-    }
-    for (auto _ : state)
-    {
-        r.apply(px.data(), px.size() / 3, int(state.range(0)));
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(int64_t(state.iterations()) * 1920 * 1080);
+    ApplyNative(state, "band3");
 }
 BENCHMARK(BM_NativeMatrixRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

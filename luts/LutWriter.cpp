@@ -84,6 +84,29 @@ void SetLattice(OCIO::Lut3DTransform& lut, const std::vector<float>& lattice, in
     }
 }
 
+/// Writes a lattice through OCIO's Baker in `format`: the Baker samples a
+/// config's processor, so it is given the lattice as a Lut3D from the
+/// (shaper-encoded) input space to the output space, at the same nodes.
+void BakeThroughOcio(const std::vector<float>& lattice, const LutOptions& o, const char* format,
+                     const std::string& path, OutputSet& set)
+{
+    OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
+    lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+    SetLattice(*lut, lattice, o.size);
+    OCIO::BakerRcPtr baker = OCIO::Baker::Create();
+    baker->setConfig(BakerConfig(lut));
+    baker->setFormat(format);
+    baker->setInputSpace("lut_in");
+    baker->setTargetSpace("lut_out");
+    baker->setCubeSize(o.size);
+    if (!o.description.empty())
+    {
+        baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
+                                                   o.description.c_str());
+    }
+    set.write(path, [&](std::ostream& os) { baker->bake(os); });
+}
+
 void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& path,
                 OutputSet& outputs)
 {
@@ -333,23 +356,11 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
                 "coarsely for scene-linear HDR; use --shaper none for display-referred [0, 1] "
                 "data, or --format cube (or spi3d, 3dl) with its companion shaper CLF");
         }
-        OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
-        lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-        SetLattice(*lut, BakeLattice(exact, o.shaper, o.size, false), o.size);
-        OCIO::BakerRcPtr baker = OCIO::Baker::Create();
-        baker->setConfig(BakerConfig(lut));
-        baker->setFormat(o.format == LutFormat::RESOLVE_CUBE ? "resolve_cube"
-                         : o.format == LutFormat::CINESPACE  ? "cinespace"
-                                                             : "houdini");
-        baker->setInputSpace("lut_in");
-        baker->setTargetSpace("lut_out");
-        baker->setCubeSize(o.size);
-        if (!o.description.empty())
-        {
-            baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
-                                                       o.description.c_str());
-        }
-        set.write(path, [&](std::ostream& os) { baker->bake(os); });
+        BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o,
+                        o.format == LutFormat::RESOLVE_CUBE ? "resolve_cube"
+                        : o.format == LutFormat::CINESPACE  ? "cinespace"
+                                                            : "houdini",
+                        path, set);
         own.commit();
         return files;
     }
@@ -362,23 +373,8 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     }
     else
     {
-        // OCIO's Baker samples a config's processor: give it the lattice as a
-        // Lut3D from the (shaper-encoded) input space to the output space.
-        OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
-        lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-        SetLattice(*lut, lattice, o.size);
-        OCIO::BakerRcPtr baker = OCIO::Baker::Create();
-        baker->setConfig(BakerConfig(lut));
-        baker->setFormat(o.format == LutFormat::CUBE ? "iridas_cube" : "flame");
-        baker->setInputSpace("lut_in");
-        baker->setTargetSpace("lut_out");
-        baker->setCubeSize(o.size);
-        if (!o.description.empty())
-        {
-            baker->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
-                                                       o.description.c_str());
-        }
-        set.write(path, [&](std::ostream& os) { baker->bake(os); });
+        BakeThroughOcio(lattice, o, o.format == LutFormat::CUBE ? "iridas_cube" : "flame", path,
+                        set);
     }
     if (OCIO::TransformRcPtr s = o.shaper.transform())
     {
