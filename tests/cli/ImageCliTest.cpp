@@ -188,6 +188,65 @@ TEST_CASE("apply without a config is the same as the config's look", "[cli][oiio
     CHECK(WorstRelative(Read(a), Read(b), 0, 3) <= 1e-6);
 }
 
+TEST_CASE("apply --method rootpoly applies natively and agrees with the config LUT look",
+          "[cli][oiio]")
+{
+    // Surface colours (channels 0.3-1 of a level) at exposures 2^-8 ... 2^4:
+    // what a plate holds. (WriteTestImage's channels are independent over
+    // 29 stops, colours no surface makes, where a LUT clamps to its range.)
+    const std::string in = Temp("plate3.exr");
+    {
+        OIIO::ImageSpec spec(32, 16, 4, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"R", "G", "B", "A"};
+        spec.alpha_channel = 3;
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> level(-8.0f, 4.0f), chroma(0.3f, 1.0f);
+        std::vector<float> px(32 * 16 * 4);
+        for (size_t i = 0; i < 32 * 16; ++i)
+        {
+            const float k = std::exp2(level(rng));
+            for (int c = 0; c < 3; ++c)
+            {
+                px[4 * i + size_t(c)] = k * chroma(rng);
+            }
+            px[4 * i + 3] = float(i % 7) / 6.0f;
+        }
+        auto out = OIIO::ImageOutput::create(in);
+        REQUIRE(out);
+        REQUIRE(out->open(in, spec));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        REQUIRE(out->close());
+    }
+    const std::string config = Temp("rootpoly_config");
+    REQUIRE(
+        Bandlight("config --out '" + config + "' --illuminants A,D65 --methods rootpoly").code ==
+        0);
+    const std::string a = Temp("rootpoly_native.exr"), b = Temp("rootpoly_look.exr");
+    const Result native =
+        Bandlight("apply '" + in + "' '" + a + "' --from A --to D65 --method rootpoly");
+    REQUIRE(native.code == 0);
+    REQUIRE(Bandlight("apply '" + in + "' '" + b + "' --look rootpoly_A_to_D65 --config '" +
+                      config + "'")
+                .code == 0);
+    // The 65³ LUT look against the native map, relative to each pixel's
+    // largest channel (what the eye weighs): the LUT's interpolation error.
+    const OIIO::ImageBuf lut = Read(b), exact = Read(a);
+    double worst = 0.0;
+    for (OIIO::ImageBuf::ConstIterator<float> pl(lut), pe(exact); !pl.done(); ++pl, ++pe)
+    {
+        const double m = std::max({pe[0], pe[1], pe[2]});
+        for (int c = 0; c < 3; ++c)
+        {
+            worst = std::max(worst, std::abs(double(pl[c]) - pe[c]) / m);
+        }
+    }
+    INFO("worst LUT error relative to the pixel's largest channel: " << worst);
+    CHECK(worst <= 0.01);
+    // Alpha passes through; the colours did change.
+    CHECK(WorstRelative(Read(a), Read(in), 3, 4) == 0.0);
+    CHECK(WorstRelative(Read(a), Read(in), 0, 3) > 0.01);
+}
+
 TEST_CASE("apply reads and writes any format OIIO does, keeping the pixel type", "[cli][oiio]")
 {
     const std::string exr = Temp("typed.exr");
@@ -309,8 +368,8 @@ TEST_CASE("accuracy writes the documented JSON and a plot, with progress", "[cli
 {
     const std::string json = Temp("accuracy.json"), png = Temp("accuracy.png");
     const Result r = Bandlight(
-        "accuracy --illuminants A,F11,D65 --methods bradford,band3,upsample "
-        "--json '" +
+        "accuracy --illuminants A,F11,D65 --methods bradford,band3,upsample,rootpoly "
+        "--lut-size 17 --json '" +
         json + "' --plot '" + png + "'");
     INFO(r.err);
     REQUIRE(r.code == 0);
@@ -322,7 +381,9 @@ TEST_CASE("accuracy writes the documented JSON and a plot, with progress", "[cli
     const std::string j = text.str();
     for (const char* key :
          {"\"rows\"", "\"method\"", "\"from\"", "\"to\"", "\"set\"", "\"mean\"", "\"p95\"",
-          "\"max\"", "\"worst_sample\"", "\"cost\"", "\"ns_per_pixel\"", "\"threads\""})
+          "\"max\"", "\"worst_sample\"", "\"cost\"", "\"ns_per_pixel\"", "\"threads\"",
+          "\"exposure\": 0.00390625", "\"shipped\": true", "\"shipped\": false",
+          "\"cross_validation\"", "\"floor\"", "\"floor-rootpoly\""})
     {
         CHECK_THAT(j, Contains(key));
     }
