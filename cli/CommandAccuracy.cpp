@@ -464,7 +464,9 @@ void AddAccuracyCommand(CLI::App& app)
     cmd->add_option("--illuminants", o->illuminants,
                     "Comma-separated illuminants (default: A,C,D50,D65,E,F1-F12)");
     cmd->add_option("--methods", o->methods,
-                    "Comma-separated methods (default: all image methods)");
+                    "Comma-separated methods (default: all image methods: none, vonkries, "
+                    "bradford, cat02, band3, band3-wp, band6, band6-wp, fit3x3, prefilter, "
+                    "metamer, upsample, rootpoly, rootpoly3)");
     cmd->add_option("--reflectances", o->reflectances,
                     "CSV or CGATS file of remittances to add as a set (repeatable)");
     cmd->add_option("--working-space", o->workingSpace, "Working space")->capture_default_str();

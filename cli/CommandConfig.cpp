@@ -109,8 +109,9 @@ void AddConfigCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option(
         "--methods", o->methods,
-        "Comma-separated methods (default: none,vonkries,bradford,cat02,band3,band3-wp; "
-        "also bandN, bandN-wp)");
+        "Comma-separated methods (default: none,vonkries,bradford,cat02,band3,band3-wp; also "
+        "bandN, bandN-wp, bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, and the "
+        "non-linear upsample, rootpoly, rootpoly3 as 3D LUT files)");
     AddObserverOption(*cmd, o->observer);
     cmd->callback([o] { RunConfig(*o); });
 }
