@@ -55,7 +55,7 @@ TEST_CASE("The compact form's exponent is 'exponent': 'n' there is an error", "[
           "specular, exponent), but 'k_s' makes it the full form: write 'n'");
 }
 
-TEST_CASE("The two Phong forms do not mix; the first key decides", "[render][file]")
+TEST_CASE("The two Phong forms do not mix: the first key decides", "[render][file]")
 {
     CHECK(Message(WithMaterial("{k_d: 0.8, O_d: TCS01, specular: 0.2}")) ==
           "s.yaml:4: key 'specular' in material 'm' belongs to the compact form (ambient, "

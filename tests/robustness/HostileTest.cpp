@@ -21,6 +21,14 @@ using namespace bandlight::test;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
+#if defined(__SANITIZE_ADDRESS__)
+#define BANDLIGHT_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define BANDLIGHT_TEST_UNDER_ASAN 1
+#endif
+#endif
+
 namespace
 {
 
@@ -385,7 +393,7 @@ TEST_CASE("A set of outputs is replaced together or not at all", "[robustness][h
     }
 }
 
-TEST_CASE("Illuminants without a white are refused; results are finite or an error",
+TEST_CASE("Illuminants without a white are refused and results are finite or an error",
           "[robustness][hostile][finite]")
 {
     const std::string dir = Folder("finite");
@@ -494,10 +502,16 @@ TEST_CASE("A failed run prints one line: notes and library messages are held bac
     CheckOneLineError(r);
     CHECK_THAT(r.err, Contains("a\\nb.csv"));
 
+#ifndef BANDLIGHT_TEST_UNDER_ASAN
     // A PNG that libpng complains about: its own messages are not printed.
+    // (Not under AddressSanitizer: OpenImageIO 2.4's PNG reader leaks its
+    // error string when libpng longjmps out of PNGInput::PngReadCallback,
+    // and LeakSanitizer ends the process over it; the check runs in the
+    // normal build.)
     const std::string png = dir + "/bad.png";
     WriteText(png, std::string("\x89PNG\r\n\x1a\n", 8) + "garbage");
     r = Bandlight("apply " + ShellWord(png) + " " + ShellWord(dir + "/o.png") +
                   " --from A --to D65");
     CheckOneLineError(r);
+#endif
 }

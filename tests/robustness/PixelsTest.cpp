@@ -79,7 +79,7 @@ const Light& D65()
 
 }  // namespace
 
-TEST_CASE("Every linear method: guard, then the exact 3x3; no NaN from Inf or finite input",
+TEST_CASE("Every linear method: guard, then the exact 3x3, no NaN from Inf or finite input",
           "[robustness][pixels]")
 {
     const RgbSpace& working = FindRgbSpace("acescg");
@@ -113,8 +113,8 @@ TEST_CASE("Every linear method: guard, then the exact 3x3; no NaN from Inf or fi
 TEST_CASE("Denormals and zero through a matrix stay tiny and signed, never NaN",
           "[robustness][pixels]")
 {
-    const auto cpu = Cpu(
-        IlluminantChangeTransform(A(), D65(), ParseMethod("bradford"), FindRgbSpace("acescg")));
+    const auto cpu =
+        Cpu(IlluminantChangeTransform(A(), D65(), ParseMethod("bradford"), FindRgbSpace("acescg")));
     const Vec3 zero = Run(cpu, Vec3f(0.0f, 0.0f, 0.0f));
     CHECK(zero == Vec3::Zero());
     const float tiny = std::numeric_limits<float>::denorm_min() * 1000.0f;
@@ -127,8 +127,8 @@ TEST_CASE("upsample's LUT: shaper clamps the input, NaN to its minimum, output a
           "[robustness][pixels]")
 {
     const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(33);
-    const auto cpu = Cpu(
-        IlluminantChangeTransform(A(), D65(), ParseMethod("upsample"), FindRgbSpace("acescg")));
+    const auto cpu =
+        Cpu(IlluminantChangeTransform(A(), D65(), ParseMethod("upsample"), FindRgbSpace("acescg")));
     for (const HardPixel& p : HardPixels())
     {
         INFO(p.label);
@@ -166,9 +166,10 @@ TEST_CASE("Black stays black through every lattice: 0 lies on a node of the alig
         INFO(method);
         const auto exact =
             IlluminantChangeTransform(A(), D65(), ParseMethod(method), FindRgbSpace("acescg"));
-        const auto cpu = ParseMethod(method).isLinear()
-                             ? Cpu(LatticeTransform(OCIO::ConstTransformRcPtr(exact), ShaperSpec(), 33))
-                             : Cpu(exact);
+        const auto cpu =
+            ParseMethod(method).isLinear()
+                ? Cpu(LatticeTransform(OCIO::ConstTransformRcPtr(exact), ShaperSpec(), 33))
+                : Cpu(exact);
         const Vec3 black = Run(cpu, Vec3f(0.0f, 0.0f, 0.0f));
         CHECK(black.cwiseAbs().maxCoeff() < 1e-7);
     }
@@ -236,8 +237,8 @@ TEST_CASE("bandlight apply gives the same defined results on a float EXR of hard
                                    method + " --working-space acescg");
         REQUIRE(r.code == 0);
         const std::vector<float> got = ReadFloatImage(out, width, 1, 3);
-        const auto cpu = Cpu(IlluminantChangeTransform(A(), D65(), ParseMethod(method),
-                                                       FindRgbSpace("acescg")));
+        const auto cpu =
+            Cpu(IlluminantChangeTransform(A(), D65(), ParseMethod(method), FindRgbSpace("acescg")));
         for (int i = 0; i < width; ++i)
         {
             INFO(method << ": " << hard[size_t(i)].label);

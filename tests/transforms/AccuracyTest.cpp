@@ -87,7 +87,7 @@ TEST_CASE("Accuracy rows carry mean <= p95 <= max and the worst sample", "[trans
     CHECK(Percentile({}, 0.5) == 0.0);
 }
 
-TEST_CASE("The exposure sweep: invariant methods score alike at every level; shipped rows",
+TEST_CASE("The exposure sweep: invariant methods score alike at every level, shipped rows too",
           "[transforms][accuracy]")
 {
     AccuracyOptions o;
