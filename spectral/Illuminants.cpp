@@ -187,7 +187,8 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
     }
     // The yardstick: equal energy at the same peak over 380–780 nm.
     const Spectrum flat = Spectrum::Constant(380.0, 5.0, 81, 1.0);
-    const double y = IntegrateXyz(scaled, Observer::CIE1931_2DEG).y();
+    const Vec3 xyz = IntegrateXyz(scaled, Observer::CIE1931_2DEG);
+    const double y = xyz.y();
     const double yFlat = IntegrateXyz(flat, Observer::CIE1931_2DEG).y();
     if (!(y >= 1e-6 * yFlat))
     {
@@ -195,6 +196,16 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
                         ": the illuminant has no power where the eye sees (its luminance is " +
                         (y > 0.0 ? "below 1e-6 of an equal-energy light's" : "not positive") +
                         "): it has no white");
+    }
+    // L*a*b* and every chromatic adaptation divide by the white's X, Y and
+    // Z: a light the eye's z̄ (or x̄) does not see at all (a red laser, power
+    // only above 650 nm) has no white to relate colours to.
+    if (!(xyz.x() > 1e-6 * y) || !(xyz.z() > 1e-6 * y))
+    {
+        throw Exception(source + ": the illuminant's white has no " +
+                        std::string(xyz.x() > 1e-6 * y ? "Z" : "X") +
+                        " (no power where that matching function sees): L*a*b* and chromatic "
+                        "adaptation need a white with X, Y and Z all above zero");
     }
     return scaled;
 }

@@ -55,7 +55,8 @@ bool IsBuiltinIlluminant(const std::string& name);
 /// other. It must have a white: a luminance (CIE 1931 ȳ) of at least 1e-6
 /// of an equal-energy light of the same peak over 380–780 nm. Throws Exception
 /// naming `source` for an illuminant with no power, only non-finite or
-/// negative luminance, or power only where the eye sees nothing.
+/// negative luminance, power only where the eye sees nothing, or a white
+/// whose X or Z is zero (a red laser: nothing to relate L*a*b* to).
 Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source);
 
 /// The canonical spelling of a built-in illuminant name ("d65" → "D65").

@@ -442,6 +442,16 @@ TEST_CASE("Illuminants without a white are refused and results are finite or an 
                        ": the illuminant has no power where the eye sees (its luminance is below "
                        "1e-6 of an equal-energy light's): it has no white\n");
 
+    // Power only above 650 nm: a white with no Z, nothing L*a*b* can relate to.
+    const std::string red = dir + "/red.csv";
+    WriteText(red, "nm,red\n680,0\n780,1\n");
+    r = Bandlight("xyz --reflectance TCS --illuminant " + ShellWord(red));
+    CheckOneLineError(r);
+    CHECK(r.err == "bandlight: " + red +
+                       ": the illuminant's white has no Z (no power where that matching function "
+                       "sees): L*a*b* and chromatic adaptation need a white with X, Y and Z all "
+                       "above zero\n");
+
     // SPECTRAL_NORM 1e-300 turns 1 into 1e300: refused as a remittance.
     const std::string sp = dir + "/norm.sp";
     WriteText(sp,
