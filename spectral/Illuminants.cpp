@@ -187,7 +187,15 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
     }
     // The yardstick: equal energy at the same peak over 380–780 nm.
     const Spectrum flat = Spectrum::Constant(380.0, 5.0, 81, 1.0);
-    const Vec3 xyz = IntegrateXyz(scaled, Observer::CIE1931_2DEG);
+    Vec3 xyz;
+    try
+    {
+        xyz = IntegrateXyz(scaled, Observer::CIE1931_2DEG);
+    }
+    catch (const Exception& e)
+    {
+        throw Exception(source + ": " + e.what());  // name the file the spectrum came from
+    }
     const double y = xyz.y();
     const double yFlat = IntegrateXyz(flat, Observer::CIE1931_2DEG).y();
     if (!(y >= 1e-6 * yFlat))
