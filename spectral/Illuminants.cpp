@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "spectral/CieData.h"
@@ -164,6 +165,16 @@ Spectrum BuiltinIlluminant(const std::string& name)
 
 Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
 {
+    // Colours are integrated on the CIE tables' grid; a spectrum that runs
+    // to absurd wavelengths would need that grid extended to match.
+    constexpr double kLongestNm = 100000.0;
+    if (!(illuminant.end() <= kLongestNm))
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%g", illuminant.end());
+        throw Exception(source + ": the illuminant's wavelengths run to " + buf +
+                        " nm; a light for colour lies below 100000 nm");
+    }
     double peak = 0.0;
     for (const double v : illuminant.values())
     {
