@@ -39,6 +39,7 @@ struct AccuracyCommandOptions
     bool noCost = false;
     bool idealOnly = false;
     int lutSize = 65;
+    PlatesOptions plates;
 };
 
 /// Per method over all pairs: the mean of the pairs' means, the 95th
@@ -56,6 +57,8 @@ struct Filter
 {
     double exposure = 1.0;
     bool shipped = false;
+    std::string plates = "lit";
+    std::string source = "cie";
 };
 
 Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& method,
@@ -68,6 +71,7 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
     for (const AccuracyRow& r : rows)
     {
         if (r.method != method || r.set != set || r.shipped != f.shipped ||
+            r.plates != f.plates || r.source != f.source ||
             (f.exposure > 0.0 && r.exposure != f.exposure))
         {
             continue;
@@ -94,13 +98,14 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
 /// The exposure whose mean is worst, and that mean.
 std::pair<double, double> WorstExposure(
     const std::vector<AccuracyRow>& rows, const std::string& method, const std::string& set,
-    bool shipped, const std::vector<double>& exposures,
+    Filter f, const std::vector<double>& exposures,
     const std::vector<std::pair<std::string, std::string>>& onlyPairs = {})
 {
     std::pair<double, double> worst{1.0, -1.0};
     for (const double k : exposures)
     {
-        const double m = Summarise(rows, method, set, {k, shipped}, onlyPairs).mean;
+        f.exposure = k;
+        const double m = Summarise(rows, method, set, f, onlyPairs).mean;
         if (m > worst.second)
         {
             worst = {k, m};
@@ -204,10 +209,35 @@ void RunAccuracy(const AccuracyCommandOptions& o)
     {
         options.methods = SplitList(o.methods);
     }
+    if (o.plates.plates == "both")
+    {
+        options.plates = {ParsePlates("balanced", o.plates.adaptation),
+                          ParsePlates("lit", o.plates.adaptation)};
+    }
+    else
+    {
+        options.plates = {o.plates.parsed()};
+    }
+    options.camera = o.plates.loadCamera();
+    if (options.camera)
+    {
+        const NamedSpectrum idt = ResolveIlluminant(o.plates.idtLight);
+        options.idtLightName = idt.name;
+        options.idtLight = idt.spectrum;
+        if (o.methods.empty())
+        {
+            options.methods.push_back("rootpoly-camera");
+        }
+    }
     options.methods.push_back("spectral");
     for (const std::string& m : options.methods)
     {
-        ParseMethod(m);
+        const MethodSpec spec = ParseMethod(m);
+        if (spec.method == ChangeMethod::ROOTPOLY_CAMERA && !options.camera)
+        {
+            throw Exception("method '" + spec.name +
+                            "' needs the camera that shot the plates (--camera FILE)");
+        }
     }
     for (const std::string& file : o.reflectances)
     {
@@ -309,66 +339,170 @@ void RunAccuracy(const AccuracyCommandOptions& o)
         << " of the white.\n"
            "ideal: the method's exact form; shipped: the OCIO processor of the look as a config "
            "holds it (guard, matrix; or shaper, 3D LUT, inverse shaper). Means over pairs; "
-           "worst: the exposure whose mean is worst.\n";
-    for (const ReflectanceSet& set : options.sets)
+           "worst: the exposure whose mean is worst.\n"
+           "plates lit: images carrying the source light's cast; balanced: white-balanced to the "
+           "working white (the ACES convention), the reference balanced the same way and "
+           "L*a*b* relative to the working white.\n";
+    for (const Plates& plates : options.plates)
     {
-        out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
-            << "  method       ideal  shipped  shipped worst (at)   p95     max   worst sample "
-               "and pair      A/F2/F11->D65 worst  ns/pixel\n";
-        for (const std::string& m : options.methods)
+        const std::string key = plates.key();
+        out << "\n== plates: " << key << " ==\n";
+        for (const ReflectanceSet& set : options.sets)
         {
-            const Summary ideal = Summarise(rows, m, set.name, {1.0, false});
-            const bool hasShipped = anyShipped && m != "spectral";
-            const Summary shipped = Summarise(rows, m, set.name, {1.0, hasShipped});
-            const auto worst = WorstExposure(rows, m, set.name, hasShipped, options.exposures);
-            const auto lecture =
-                WorstExposure(rows, m, set.name, hasShipped, options.exposures, lecturePairs);
-            const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped});
-            if (set.name == heldOut)
+            out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
+                << "  method       ideal  shipped  shipped worst (at)   p95     max   worst "
+                   "sample and pair      A/F2/F11->D65 worst  ns/pixel\n";
+            for (const std::string& m : options.methods)
             {
-                plotError[m] = worst.second;
+                if (m == "rootpoly-camera" || m == "rootpoly3-camera")
+                {
+                    continue;  // measured on camera plates below
+                }
+                const Filter idealF{1.0, false, key, "cie"};
+                const bool hasShipped = anyShipped && m != "spectral";
+                const Filter shippedF{1.0, hasShipped, key, "cie"};
+                const Summary ideal = Summarise(rows, m, set.name, idealF);
+                const Summary shipped = Summarise(rows, m, set.name, shippedF);
+                const auto worst = WorstExposure(rows, m, set.name, shippedF, options.exposures);
+                const auto lecture = WorstExposure(rows, m, set.name, shippedF, options.exposures,
+                                                   lecturePairs);
+                const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped, key, "cie"});
+                if (set.name == heldOut && &plates == &options.plates.front())
+                {
+                    plotError[m] = worst.second;
+                }
+                char line[320];
+                std::snprintf(
+                    line, sizeof line,
+                    "  %-10s %7.2f %8.2f %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
+                    m.c_str(), ideal.mean, shipped.mean, worst.second, Stops(worst.first).c_str(),
+                    all.p95, all.max, all.worst.c_str(), lecture.second,
+                    costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
+                out << line;
             }
-            char line[320];
-            std::snprintf(line, sizeof line,
-                          "  %-10s %7.2f %8.2f %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
-                          m.c_str(), ideal.mean, shipped.mean, worst.second,
-                          Stops(worst.first).c_str(), all.p95, all.max, all.worst.c_str(),
-                          lecture.second, costAll.count(m) ? Fixed(costAll[m], 2).c_str() : "-");
-            out << line;
+            if (!plates.balanced())
+            {
+                for (const char* floor : {"floor-3x3", "floor-rootpoly"})
+                {
+                    const Summary f = Summarise(floorRows, floor, set.name, {1.0, false});
+                    const Summary fl =
+                        Summarise(floorRows, floor, set.name, {1.0, false}, lecturePairs);
+                    char line[200];
+                    std::snprintf(line, sizeof line,
+                                  "  %-14s %5.2f   (fitted on this set itself: in-sample; "
+                                  "A/F2/F11->D65 %.2f)\n",
+                                  floor, f.mean, fl.mean);
+                    out << line;
+                }
+            }
         }
-        for (const char* floor : {"floor-3x3", "floor-rootpoly"})
+        if (plates.balanced() && options.measureMismatch)
         {
-            const Summary f = Summarise(floorRows, floor, set.name, {1.0, false});
-            const Summary fl = Summarise(floorRows, floor, set.name, {1.0, false}, lecturePairs);
-            char line[200];
-            std::snprintf(line, sizeof line,
-                          "  %-14s %5.2f   (fitted on this set itself: in-sample; "
-                          "A/F2/F11->D65 %.2f)\n",
-                          floor, f.mean, fl.mean);
-            out << line;
+            out << "\nlit looks on these balanced plates (the cast corrected twice), ideal, k = 1: "
+                   "mean over pairs (A/F2/F11->D65)\n  method    ";
+            for (const ReflectanceSet& set : options.sets)
+            {
+                char h[64];
+                std::snprintf(h, sizeof h, " %20s", set.name.substr(0, 20).c_str());
+                out << h;
+            }
+            out << "\n";
+            for (const std::string& m : options.methods)
+            {
+                if (m == "spectral" || m == "none" || m.find("-camera") != std::string::npos)
+                {
+                    continue;
+                }
+                char line[64];
+                std::snprintf(line, sizeof line, "  %-10s", m.c_str());
+                out << line;
+                for (const ReflectanceSet& set : options.sets)
+                {
+                    const Filter f{1.0, false, key + "-through-lit-looks", "cie"};
+                    std::snprintf(line, sizeof line, " %10.2f (%6.2f)",
+                                  Summarise(rows, m, set.name, f).mean,
+                                  Summarise(rows, m, set.name, f, lecturePairs).mean);
+                    out << line;
+                }
+                out << "\n";
+            }
         }
-    }
-    if (!cvRows.empty())
-    {
-        out << "\nfitted methods on their own training data (ideal, k = 1): in-sample against "
-               "5-fold cross-validated\n";
+        bool anyCv = false;
         for (const std::string& m : options.methods)
         {
-            const Summary in = Summarise(cvRows, m, "training, in-sample", {1.0, false});
-            const Summary cv = Summarise(cvRows, m, "training, 5-fold", {1.0, false});
-            const Summary inL =
-                Summarise(cvRows, m, "training, in-sample", {1.0, false}, lecturePairs);
-            const Summary cvL =
-                Summarise(cvRows, m, "training, 5-fold", {1.0, false}, lecturePairs);
+            const Summary in = Summarise(cvRows, m, "training, in-sample", {1.0, false, key});
+            const Summary cv = Summarise(cvRows, m, "training, 5-fold", {1.0, false, key});
             if (in.mean == 0.0 && cv.mean == 0.0)
             {
                 continue;
             }
+            if (!anyCv)
+            {
+                out << "\nfitted methods on their own training data (ideal, k = 1): in-sample "
+                       "against 5-fold cross-validated\n";
+                anyCv = true;
+            }
+            const Summary inL = Summarise(cvRows, m, "training, in-sample", {1.0, false, key},
+                                          lecturePairs);
+            const Summary cvL =
+                Summarise(cvRows, m, "training, 5-fold", {1.0, false, key}, lecturePairs);
             char line[200];
             std::snprintf(line, sizeof line,
                           "  %-10s in-sample %5.2f  5-fold %5.2f   (A/F2/F11->D65: %5.2f, %5.2f)\n",
                           m.c_str(), in.mean, cv.mean, inL.mean, cvL.mean);
             out << line;
+        }
+        if (options.camera)
+        {
+            out << "\ncamera " << options.camera->name()
+                << ": the plates as it records them, ideal forms, k = 1, mean over pairs "
+                   "(A/F2/F11->D65)\n"
+                   "  cie: the colour as the observer sees it; camera: white-balanced and through "
+                   "an IDT fitted the rawtoaces way for the shooting light; daylight IDT: "
+                   "balanced by gains, through the one IDT fitted for "
+                << options.idtLightName << "\n";
+            for (const ReflectanceSet& set : options.sets)
+            {
+                out << "\n  set " << set.name
+                    << "\n  method                 cie             camera     the camera adds"
+                       "        daylight IDT\n";
+                for (const std::string& m : options.methods)
+                {
+                    if (m == "spectral")
+                    {
+                        continue;
+                    }
+                    const bool cameraMethod = m.find("-camera") != std::string::npos;
+                    const auto at = [&](const std::string& source, bool lecture)
+                    {
+                        return Summarise(rows, m, set.name, {1.0, false, key, source},
+                                         lecture ? lecturePairs
+                                                 : std::vector<std::pair<std::string, std::string>>{})
+                            .mean;
+                    };
+                    char line[240];
+                    if (cameraMethod)
+                    {
+                        std::snprintf(line, sizeof line,
+                                      "  %-16s %18s %18s %18s %8.2f (%6.2f)\n", m.c_str(), "-",
+                                      "-", "-", at("camera-daylight-idt", false),
+                                      at("camera-daylight-idt", true));
+                    }
+                    else
+                    {
+                        std::snprintf(line, sizeof line,
+                                      "  %-16s %8.2f (%6.2f) %8.2f (%6.2f) %+8.2f (%+6.2f) "
+                                      "%8.2f (%6.2f)\n",
+                                      m.c_str(), at("cie", false), at("cie", true),
+                                      at("camera", false), at("camera", true),
+                                      at("camera", false) - at("cie", false),
+                                      at("camera", true) - at("cie", true),
+                                      at("camera-daylight-idt", false),
+                                      at("camera-daylight-idt", true));
+                    }
+                    out << line;
+                }
+            }
         }
     }
     if (!cost.empty())
@@ -404,6 +538,8 @@ void RunAccuracy(const AccuracyCommandOptions& o)
                              {"from", r.from},
                              {"to", r.to},
                              {"set", r.set},
+                             {"plates", r.plates},
+                             {"camera", r.source},
                              {"exposure", r.exposure},
                              {"shipped", r.shipped},
                              {"mean", r.mean},
@@ -413,6 +549,16 @@ void RunAccuracy(const AccuracyCommandOptions& o)
             }
             return a;
         };
+        if (options.camera)
+        {
+            j["camera"] = {{"name", options.camera->name()},
+                           {"file", o.plates.camera},
+                           {"idt_light", options.idtLightName}};
+        }
+        else
+        {
+            j["camera"] = nullptr;
+        }
         j["rows"] = toJson(rows);
         j["cross_validation"] = toJson(cvRows);
         j["floor"] = toJson(floorRows);
@@ -479,6 +625,8 @@ void AddAccuracyCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_flag("--ideal-only", o->idealOnly,
                   "Measure only the methods' exact forms, not the OCIO transforms that ship");
+    o->plates.plates = "both";
+    AddPlatesOptions(*cmd, o->plates, true);
     cmd->callback([o] { RunAccuracy(*o); });
 }
 

@@ -26,6 +26,7 @@ struct ConfigCommandOptions
     std::string observer;
     std::string basePaths = "relative";
     int lutSize = 65;
+    PlatesOptions plates;
 };
 
 void RunConfig(const ConfigCommandOptions& o)
@@ -42,6 +43,13 @@ void RunConfig(const ConfigCommandOptions& o)
     options.outputDir = o.out;
     options.lutSize = o.lutSize;
     options.absoluteBasePaths = o.basePaths == "absolute";
+    options.plates = o.plates.parsed();
+    options.camera = o.plates.loadCamera();
+    {
+        const NamedSpectrum idt = ResolveIlluminant(o.plates.idtLight);
+        options.idtLightName = idt.name;
+        options.idtLight = idt.spectrum;
+    }
 
     ConfigPackage package;
     std::string identified;
@@ -59,7 +67,8 @@ void RunConfig(const ConfigCommandOptions& o)
     std::cout << "Wrote " << o.out << "/config.ocio: " << package.config->getNumLooks()
               << " looks and " << package.config->getNumNamedTransforms()
               << " named transforms for " << identified << " (" << options.lights.size()
-              << " illuminants, " << options.methods.size() << " methods)";
+              << " illuminants, " << options.methods.size() << " methods) for "
+              << (options.plates.balanced() ? "white-balanced" : "lit") << " plates";
     if (!package.lutFiles.empty())
     {
         std::cout << ", and " << package.lutFiles.size() << " LUT files in " << o.out << "/luts";
@@ -111,8 +120,10 @@ void AddConfigCommand(CLI::App& app)
         "--methods", o->methods,
         "Comma-separated methods (default: none,vonkries,bradford,cat02,band3,band3-wp; also "
         "bandN, bandN-wp, bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, and the "
-        "non-linear upsample, rootpoly, rootpoly3 as 3D LUT files)");
+        "non-linear upsample, rootpoly, rootpoly3 as 3D LUT files, and rootpoly-camera with "
+        "--camera)");
     AddObserverOption(*cmd, o->observer);
+    AddPlatesOptions(*cmd, o->plates);
     cmd->callback([o] { RunConfig(*o); });
 }
 

@@ -30,7 +30,7 @@ void RunLut(const LutCommandOptions& o, bool sizeGiven)
     options.size = o.size;
     options.forceLattice = sizeGiven;
     options.shaper = ShaperSpec::Parse(o.shaper);
-    const MethodSpec method = ParseMethod(o.relight.method);
+    const MethodSpec method = o.relight.methodSpec();
     LutFiles files;
     if (method.isLinear())
     {
@@ -52,7 +52,8 @@ void RunLut(const LutCommandOptions& o, bool sizeGiven)
         }
         options.description = "Relight from " + from.name + " to " + to.name + " in " +
                               FindRgbSpace(o.relight.workingSpace).displayName + ". " +
-                              DescribeMethod(method);
+                              DescribeMethod(method) + " " +
+                              method.plates.describe(FindRgbSpace(o.relight.workingSpace).displayName);
         files = WriteLut([relighter](float* rgb, size_t n) { relighter->apply(rgb, n); }, options,
                          o.out);
     }

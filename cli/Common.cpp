@@ -158,12 +158,14 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
         app.add_option("--to", o.to, "Illuminant it should look lit by (name or spectrum file)");
     app.add_option("--method", o.method,
                    "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
-                   "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample")
+                   "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
+                   "rootpoly3, rootpoly-camera (with --camera)")
         ->capture_default_str();
     app.add_option("--working-space", o.workingSpace,
                    "Linear working space of the image: acescg, aces2065-1, lin-rec709, rec2020, "
                    "p3-d65, ebu3213")
         ->capture_default_str();
+    AddPlatesOptions(app, o.plates);
     if (required)
     {
         from->required();
@@ -171,11 +173,70 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
     }
 }
 
+void AddPlatesOptions(CLI::App& app, PlatesOptions& o, bool allowBoth)
+{
+    app.add_option("--plates", o.plates,
+                   std::string("What the images are: balanced (white-balanced to the working "
+                               "white, as every ACES IDT delivers them: the look keeps neutrals "
+                               "neutral and changes only the light's colour rendering) or lit "
+                               "(carrying the source light's cast, which the look removes)") +
+                       (allowBoth ? "; both: measure the two" : ""))
+        ->capture_default_str();
+    app.add_option("--adaptation", o.adaptation,
+                   "Chromatic adaptation the balanced plates were balanced with: cat02 "
+                   "(rawtoaces) or bradford")
+        ->capture_default_str();
+    app.add_option("--camera", o.camera,
+                   "SpectralCamera spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
+                   "columns): enables rootpoly-camera, and accuracy simulates that camera's plates");
+    app.add_option("--camera-idt", o.idtLight,
+                   "The light the camera's one fixed IDT was fitted for (rootpoly-camera's "
+                   "plates: that IDT plus white-balance gains)")
+        ->capture_default_str();
+}
+
+Plates PlatesOptions::parsed() const
+{
+    return ParsePlates(plates, adaptation);
+}
+
+std::shared_ptr<const SpectralCamera> PlatesOptions::loadCamera() const
+{
+    if (camera.empty())
+    {
+        return nullptr;
+    }
+    return std::make_shared<const SpectralCamera>(ReadCameraFile(camera));
+}
+
+MethodSpec PlatesOptions::apply(MethodSpec method, const std::shared_ptr<const SpectralCamera>& cam) const
+{
+    method.plates = parsed();
+    method.camera = cam;
+    if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
+    {
+        if (!cam)
+        {
+            throw Exception("method '" + method.name +
+                            "' needs the camera that shot the plates (--camera FILE)");
+        }
+        const NamedSpectrum idt = ResolveIlluminant(idtLight);
+        method.idtLightName = idt.name;
+        method.idtLight = idt.spectrum;
+    }
+    return method;
+}
+
+MethodSpec RelightOptions::methodSpec() const
+{
+    return plates.apply(ParseMethod(method), plates.loadCamera());
+}
+
 OCIO_NAMESPACE::GroupTransformRcPtr RelightTransform(const RelightOptions& o, bool* isMatrix)
 {
     const NamedSpectrum from = ResolveIlluminant(o.from);
     const NamedSpectrum to = ResolveIlluminant(o.to);
-    const MethodSpec method = ParseMethod(o.method);
+    const MethodSpec method = o.methodSpec();
     const RgbSpace& working = FindRgbSpace(o.workingSpace);
     if (isMatrix)
     {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "spectral/CieData.h"
 #include "spectral/SpectrumIO.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::cli
 {
@@ -25,6 +27,27 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile);
 /// Adds --observer with its check and default (1931).
 CLI::Option* AddObserverOption(CLI::App& app, std::string& value);
 
+/// --plates/--adaptation/--camera/--camera-idt: what the pipeline's images
+/// are and, optionally, the camera that shot them.
+struct PlatesOptions
+{
+    std::string plates = "balanced";
+    std::string adaptation = "cat02";
+    std::string camera;  ///< a camera sensitivities file, or ""
+    std::string idtLight = "D55";
+
+    /// The parsed convention.
+    Plates parsed() const;
+    /// The camera file read (nullptr without --camera); read once per call.
+    std::shared_ptr<const SpectralCamera> loadCamera() const;
+    /// `method` with the plates, the camera and its IDT light set.
+    MethodSpec apply(MethodSpec method, const std::shared_ptr<const SpectralCamera>& camera) const;
+};
+
+/// Adds the four options above. `allowBoth`: --plates also takes "both"
+/// (accuracy measures the two conventions).
+void AddPlatesOptions(CLI::App& app, PlatesOptions& o, bool allowBoth = false);
+
 /// --from/--to/--method/--working-space: an illuminant change without a config.
 struct RelightOptions
 {
@@ -32,6 +55,10 @@ struct RelightOptions
     std::string to;
     std::string method = "bradford";
     std::string workingSpace = "acescg";
+    PlatesOptions plates;
+
+    /// The method with its plates and camera.
+    MethodSpec methodSpec() const;
 };
 
 /// Adds the four options above to a command.

@@ -31,6 +31,18 @@ struct ConfigOptions
     /// ExtendConfig: rewrite the base's relative search paths as absolute
     /// paths instead of paths relative to outputDir.
     bool absoluteBasePaths = false;
+    /// What the pipeline's images are. Balanced (CAT02) by default: in an
+    /// ACES pipeline every IDT white-balances, so a plate shot under
+    /// tungsten arrives neutral (README, "Plates: lit or balanced").
+    Plates plates{PlateConvention::BALANCED, AdaptationMethod::CAT02};
+    /// rootpoly-camera: the camera that shot the plates and the light of
+    /// its one fixed IDT (empty name: DEFAULT_IDT_LIGHT).
+    std::shared_ptr<const SpectralCamera> camera;
+    std::string idtLightName;
+    Spectrum idtLight;
+
+    /// A method of these options: parsed, with the plates and camera set.
+    MethodSpec method(const std::string& name) const;
 };
 
 /// A config with the LUT files its non-linear looks reference (paths

@@ -65,7 +65,8 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
 {
     const std::string name = LookName(method.name, from.name, to.name);
     const std::string description = "Relight from " + from.name + " to " + to.name + " in " +
-                                    working.displayName + ". " + DescribeMethod(method);
+                                    working.displayName + ". " + DescribeMethod(method) + " " +
+                                    method.plates.describe(working.displayName);
     auto relighter = std::make_shared<Relighter>(from, to, method, working, observer);
     if (relighter->isLinear())
     {
@@ -75,8 +76,23 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
     // upsample fits every pixel at one level: neighbouring lattice nodes on
     // one ray through black share their fit (the cache), so a 33^3 lattice
     // needs about a tenth of the fits.
-    OCIO::GroupTransformRcPtr g = LatticeTransform(
-        [relighter](float* rgb, size_t count) { relighter->apply(rgb, count); }, shaper, lutSize);
+    // A non-linear method's input matrix (balanced plates: back to the
+    // light's cast; rootpoly-camera: back to the camera's record) is exact
+    // in front of the LUT, which holds only the method itself.
+    OCIO::GroupTransformRcPtr lattice = LatticeTransform(
+        [relighter](float* rgb, size_t count) { relighter->applyAfterInput(rgb, count); }, shaper,
+        lutSize);
+    OCIO::GroupTransformRcPtr g = lattice;
+    if (const Mat3* input = relighter->inputMatrix())
+    {
+        g = OCIO::GroupTransform::Create();
+        g->appendTransform(InfinityGuard());
+        g->appendTransform(MakeMatrixTransform(*input));
+        for (int i = 0; i < lattice->getNumTransforms(); ++i)
+        {
+            g->appendTransform(lattice->getTransform(i)->createEditableCopy());
+        }
+    }
     OCIO::FormatMetadata& md = g->getFormatMetadata();
     md.setName(name.c_str());
     md.setID(name.c_str());

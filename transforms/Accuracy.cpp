@@ -6,6 +6,9 @@
 #include <cmath>
 #include <thread>
 
+#include <Eigen/LU>
+
+#include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
 
@@ -46,18 +49,30 @@ struct Errors
     std::string worst;
 };
 
-Errors Score(const SurfaceRenderer& to, const std::vector<Vec3>& predicted,
+/// How predictions are judged: their RGB → XYZ and the L*a*b* white.
+struct Judge
+{
+    Mat3 rgbToXyz;
+    Vec3 white;
+};
+
+Judge LitJudge(const SurfaceRenderer& to)
+{
+    return {to.rgbToXyz(), to.rgbToXyz() * to.white()};
+}
+
+Errors Score(const Judge& judge, const std::vector<Vec3>& predicted,
              const std::vector<Vec3>& reference, const std::vector<NamedSpectrum>& names)
 {
-    const Vec3 white = to.rgbToXyz() * to.white();
+    const Vec3& white = judge.white;
     std::vector<double> de;
     Errors e;
     double worst = -1.0;
     for (size_t k = 0; k < reference.size(); ++k)
     {
         const Vec3 p = predicted[k].allFinite() ? predicted[k] : Vec3(1e6, -1e6, 1e6);
-        const double d = DeltaE2000(XyzToLab(to.rgbToXyz() * p, white),
-                                    XyzToLab(to.rgbToXyz() * reference[k], white));
+        const double d = DeltaE2000(XyzToLab(judge.rgbToXyz * p, white),
+                                    XyzToLab(judge.rgbToXyz * reference[k], white));
         de.push_back(d);
         e.mean += d;
         if (d > worst)
@@ -73,9 +88,12 @@ Errors Score(const SurfaceRenderer& to, const std::vector<Vec3>& predicted,
 }
 
 AccuracyRow MakeRow(const std::string& method, const Light& from, const Light& to,
-                    const std::string& set, double exposure, bool shipped, const Errors& e)
+                    const std::string& set, double exposure, bool shipped, const Errors& e,
+                    const std::string& plates = "lit", const std::string& source = "cie")
 {
     AccuracyRow r;
+    r.plates = plates;
+    r.source = source;
     r.method = method;
     r.from = from.name;
     r.to = to.name;
@@ -139,6 +157,37 @@ std::vector<AccuracyRow> ForEachPair(
     return rows;
 }
 
+/// The plate conventions' matrices for one pair.
+struct PairPlates
+{
+    Plates plates;
+    Mat3 balanceFrom = Mat3::Identity();  ///< lit under `from` → this convention's plate
+    Mat3 balanceTo = Mat3::Identity();    ///< the truth under `to` → this convention's reference
+    Judge judge;
+};
+
+PairPlates MakePairPlates(const Plates& p, const Light& from, const Light& to,
+                          const SurfaceRenderer& r2, const RgbSpace& working, Observer observer)
+{
+    PairPlates out{p, Mat3::Identity(), Mat3::Identity(), LitJudge(r2)};
+    if (p.balanced())
+    {
+        out.balanceFrom = BalanceMatrix(from.spectrum, working, p.adaptation, observer);
+        out.balanceTo = BalanceMatrix(to.spectrum, working, p.adaptation, observer);
+        out.judge = {r2.rgbToXyz(), WorkingWhiteXyz(working)};
+    }
+    return out;
+}
+
+MethodSpec WithPlates(MethodSpec m, const Plates& p, const AccuracyOptions& o)
+{
+    m.plates = p;
+    m.camera = o.camera;
+    m.idtLightName = o.idtLightName;
+    m.idtLight = o.idtLight;
+    return m;
+}
+
 }  // namespace
 
 std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
@@ -149,6 +198,11 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
     for (const std::string& m : o.methods)
     {
         methods.push_back(ParseMethod(m));
+        if (methods.back().method == ChangeMethod::ROOTPOLY_CAMERA && !o.camera)
+        {
+            throw Exception("method '" + m +
+                            "' needs the camera that shot the plates (--camera FILE)");
+        }
     }
     // Remittances sampled once.
     std::vector<std::vector<SurfaceRenderer::Samples>> samples(o.sets.size());
@@ -159,71 +213,155 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
             samples[s].push_back(SurfaceRenderer::Sample(r.spectrum));
         }
     }
+    const Spectrum daylight = !o.camera ? Spectrum()
+                              : o.idtLight.empty() ? BuiltinIlluminant(o.idtLightName)
+                                                   : o.idtLight;
     return ForEachPair(
         o, progress,
         [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
         {
             const SurfaceRenderer r1(from.spectrum, working, o.observer);
             const SurfaceRenderer r2(to.spectrum, working, o.observer);
-            for (const MethodSpec& method : methods)
+            for (const Plates& plates : o.plates)
             {
-                if (method.method == ChangeMethod::SPECTRAL)
+                const PairPlates pp = MakePairPlates(plates, from, to, r2, working, o.observer);
+                // The plates each source delivers (before exposure), per set.
+                struct Source
                 {
-                    for (size_t s = 0; s < o.sets.size(); ++s)
-                    {
-                        for (const double k : o.exposures)
-                        {
-                            rows.push_back(
-                                MakeRow(method.name, from, to, o.sets[s].name, k, false, Errors{}));
-                        }
-                    }
-                    continue;
-                }
-                const auto relight =
-                    std::make_shared<Relighter>(from, to, method, working, o.observer);
-                std::vector<std::pair<bool, PixelBatch>> forms = {
-                    {false, [relight](float* rgb, size_t n) { relight->apply(rgb, n, 1); }}};
-                if (o.shipped)
-                {
-                    if (PixelBatch shipped = o.shipped(from, to, method))
-                    {
-                        forms.push_back({true, shipped});
-                    }
-                }
+                    std::string name;
+                    std::vector<std::vector<Vec3>> plate;
+                };
+                std::vector<Source> sources(1);
+                sources[0].name = "cie";
                 for (size_t s = 0; s < o.sets.size(); ++s)
                 {
-                    const size_t n = samples[s].size();
-                    std::vector<Vec3> reference(n);
-                    std::vector<float> buffer(3 * n * o.exposures.size());
-                    for (size_t i = 0; i < n; ++i)
+                    sources[0].plate.emplace_back();
+                    for (const auto& r : samples[s])
                     {
-                        reference[i] = r2.render(samples[s][i]);
+                        sources[0].plate.back().push_back(pp.balanceFrom * r1.render(r));
                     }
-                    for (const auto& [shipped, apply] : forms)
+                }
+                if (o.camera)
+                {
+                    // The camera's plates are balanced by their IDT; lit
+                    // plates are those with the cast put back.
+                    const CameraShot shot(*o.camera, from.spectrum);
+                    const Mat3 toPlate = pp.balanceFrom *
+                                         BalanceMatrix(from.spectrum, working, plates.adaptation,
+                                                       o.observer)
+                                             .inverse();
+                    const Mat3 idts[2] = {
+                        FitIdt(*o.camera, from.spectrum, working, plates.adaptation, o.observer),
+                        FitIdt(*o.camera, daylight, working, plates.adaptation, o.observer)};
+                    const char* names[2] = {"camera", "camera-daylight-idt"};
+                    for (int k = 0; k < 2; ++k)
                     {
-                        for (size_t e = 0; e < o.exposures.size(); ++e)
+                        Source src{names[k], {}};
+                        const Mat3 m = toPlate * idts[k];
+                        for (size_t s = 0; s < o.sets.size(); ++s)
                         {
-                            for (size_t i = 0; i < n; ++i)
+                            src.plate.emplace_back();
+                            for (const auto& r : samples[s])
                             {
-                                const Vec3 c = o.exposures[e] * r1.render(samples[s][i]);
-                                for (int ch = 0; ch < 3; ++ch)
-                                {
-                                    buffer[3 * (e * n + i) + size_t(ch)] = float(c[ch]);
-                                }
+                                src.plate.back().push_back(m * shot.record(r));
                             }
                         }
-                        apply(buffer.data(), n * o.exposures.size());
-                        for (size_t e = 0; e < o.exposures.size(); ++e)
+                        sources.push_back(std::move(src));
+                    }
+                }
+                for (const MethodSpec& parsed : methods)
+                {
+                    const MethodSpec method = WithPlates(parsed, plates, o);
+                    if (method.method == ChangeMethod::SPECTRAL)
+                    {
+                        for (size_t s = 0; s < o.sets.size(); ++s)
                         {
-                            std::vector<Vec3> predicted(n);
+                            for (const double k : o.exposures)
+                            {
+                                rows.push_back(MakeRow(method.name, from, to, o.sets[s].name, k,
+                                                       false, Errors{}, plates.key()));
+                            }
+                        }
+                        continue;
+                    }
+                    const auto relight =
+                        std::make_shared<Relighter>(from, to, method, working, o.observer);
+                    // Lit looks on balanced plates: the doubled correction.
+                    std::shared_ptr<Relighter> litLooks;
+                    if (o.measureMismatch && plates.balanced())
+                    {
+                        litLooks = std::make_shared<Relighter>(
+                            from, to, WithPlates(parsed, Plates{}, o), working, o.observer);
+                    }
+                    for (const Source& source : sources)
+                    {
+                        // rootpoly-camera is made for the daylight-IDT plates only.
+                        const bool cameraMethod = method.method == ChangeMethod::ROOTPOLY_CAMERA;
+                        if (cameraMethod && source.name != "camera-daylight-idt")
+                        {
+                            continue;
+                        }
+                        struct Form
+                        {
+                            bool shipped;
+                            PixelBatch apply;
+                            std::string plates;
+                        };
+                        std::vector<Form> forms = {
+                            {false, [relight](float* rgb, size_t n) { relight->apply(rgb, n, 1); },
+                             plates.key()}};
+                        if (o.shipped && source.name == "cie")
+                        {
+                            if (PixelBatch shipped = o.shipped(from, to, method))
+                            {
+                                forms.push_back({true, shipped, plates.key()});
+                            }
+                        }
+                        if (litLooks && source.name == "cie")
+                        {
+                            forms.push_back(
+                                {false,
+                                 [litLooks](float* rgb, size_t n) { litLooks->apply(rgb, n, 1); },
+                                 plates.key() + "-through-lit-looks"});
+                        }
+                        for (size_t s = 0; s < o.sets.size(); ++s)
+                        {
+                            const size_t n = samples[s].size();
+                            std::vector<Vec3> reference(n);
+                            std::vector<float> buffer(3 * n * o.exposures.size());
                             for (size_t i = 0; i < n; ++i)
                             {
-                                const float* p = &buffer[3 * (e * n + i)];
-                                predicted[i] = Vec3(p[0], p[1], p[2]) / o.exposures[e];
+                                reference[i] = pp.balanceTo * r2.render(samples[s][i]);
                             }
-                            rows.push_back(MakeRow(
-                                method.name, from, to, o.sets[s].name, o.exposures[e], shipped,
-                                Score(r2, predicted, reference, o.sets[s].samples)));
+                            for (const Form& form : forms)
+                            {
+                                for (size_t e = 0; e < o.exposures.size(); ++e)
+                                {
+                                    for (size_t i = 0; i < n; ++i)
+                                    {
+                                        const Vec3 c = o.exposures[e] * source.plate[s][i];
+                                        for (int ch = 0; ch < 3; ++ch)
+                                        {
+                                            buffer[3 * (e * n + i) + size_t(ch)] = float(c[ch]);
+                                        }
+                                    }
+                                }
+                                form.apply(buffer.data(), n * o.exposures.size());
+                                for (size_t e = 0; e < o.exposures.size(); ++e)
+                                {
+                                    std::vector<Vec3> predicted(n);
+                                    for (size_t i = 0; i < n; ++i)
+                                    {
+                                        const float* p = &buffer[3 * (e * n + i)];
+                                        predicted[i] = Vec3(p[0], p[1], p[2]) / o.exposures[e];
+                                    }
+                                    rows.push_back(MakeRow(
+                                        method.name, from, to, o.sets[s].name, o.exposures[e],
+                                        form.shipped,
+                                        Score(pp.judge, predicted, reference, o.sets[s].samples),
+                                        form.plates, source.name));
+                                }
+                            }
                         }
                     }
                 }
@@ -255,47 +393,54 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
         {
             const SurfaceRenderer r1(from.spectrum, working, o.observer);
             const SurfaceRenderer r2(to.spectrum, working, o.observer);
-            for (const MethodSpec& method : methods)
+            for (const Plates& plates : o.plates)
             {
-                const std::vector<NamedSpectrum>& all = method.method == ChangeMethod::FIT3X3
-                                                            ? TrainingSet().samples
-                                                            : RootPolynomialTraining();
-                const auto evaluate = [&](const MethodSpec& fitted,
-                                          const std::vector<NamedSpectrum>& test,
-                                          std::vector<Vec3>& predicted, std::vector<Vec3>& ref)
+                const PairPlates pp = MakePairPlates(plates, from, to, r2, working, o.observer);
+                for (const MethodSpec& parsed : methods)
                 {
-                    const Relighter relight(from, to, fitted, working, o.observer);
-                    for (const NamedSpectrum& t : test)
+                    const MethodSpec method = WithPlates(parsed, plates, o);
+                    const std::vector<NamedSpectrum>& all = method.method == ChangeMethod::FIT3X3
+                                                                ? TrainingSet().samples
+                                                                : RootPolynomialTraining();
+                    const auto evaluate = [&](const MethodSpec& fitted,
+                                              const std::vector<NamedSpectrum>& test,
+                                              std::vector<Vec3>& predicted, std::vector<Vec3>& ref)
                     {
-                        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
-                        predicted.push_back(relight.apply(r1.render(r)));
-                        ref.push_back(r2.render(r));
+                        const Relighter relight(from, to, fitted, working, o.observer);
+                        for (const NamedSpectrum& t : test)
+                        {
+                            const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+                            predicted.push_back(relight.apply(pp.balanceFrom * r1.render(r)));
+                            ref.push_back(pp.balanceTo * r2.render(r));
+                        }
+                    };
+                    {
+                        MethodSpec fitted = method;
+                        fitted.training = all;
+                        std::vector<Vec3> predicted, ref;
+                        evaluate(fitted, all, predicted, ref);
+                        rows.push_back(MakeRow(method.name, from, to, inSample, 1.0, false,
+                                               Score(pp.judge, predicted, ref, all),
+                                               plates.key()));
                     }
-                };
-                {
-                    MethodSpec fitted = method;
-                    fitted.training = all;
+                    // Folds by position (every folds-th sample), the same for every pair.
                     std::vector<Vec3> predicted, ref;
-                    evaluate(fitted, all, predicted, ref);
-                    rows.push_back(MakeRow(method.name, from, to, inSample, 1.0, false,
-                                           Score(r2, predicted, ref, all)));
-                }
-                // Folds by position (every folds-th sample), the same for every pair.
-                std::vector<Vec3> predicted, ref;
-                std::vector<NamedSpectrum> order;
-                for (int f = 0; f < folds; ++f)
-                {
-                    MethodSpec fitted = method;
-                    std::vector<NamedSpectrum> test;
-                    for (size_t i = 0; i < all.size(); ++i)
+                    std::vector<NamedSpectrum> order;
+                    for (int f = 0; f < folds; ++f)
                     {
-                        (int(i % size_t(folds)) == f ? test : fitted.training).push_back(all[i]);
+                        MethodSpec fitted = method;
+                        std::vector<NamedSpectrum> test;
+                        for (size_t i = 0; i < all.size(); ++i)
+                        {
+                            (int(i % size_t(folds)) == f ? test : fitted.training)
+                                .push_back(all[i]);
+                        }
+                        evaluate(fitted, test, predicted, ref);
+                        order.insert(order.end(), test.begin(), test.end());
                     }
-                    evaluate(fitted, test, predicted, ref);
-                    order.insert(order.end(), test.begin(), test.end());
+                    rows.push_back(MakeRow(method.name, from, to, crossName, 1.0, false,
+                                           Score(pp.judge, predicted, ref, order), plates.key()));
                 }
-                rows.push_back(MakeRow(method.name, from, to, crossName, 1.0, false,
-                                       Score(r2, predicted, ref, order)));
             }
         });
 }
@@ -322,9 +467,9 @@ std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& o)
                                    ref.push_back(r2.render(r));
                                }
                                rows.push_back(MakeRow("floor-3x3", from, to, set.name, 1.0, false,
-                                                      Score(r2, by3x3, ref, set.samples)));
+                                                      Score(LitJudge(r2), by3x3, ref, set.samples)));
                                rows.push_back(MakeRow("floor-rootpoly", from, to, set.name, 1.0,
-                                                      false, Score(r2, byRoot, ref, set.samples)));
+                                                      false, Score(LitJudge(r2), byRoot, ref, set.samples)));
                            }
                        });
 }

@@ -22,6 +22,16 @@ struct AccuracyRow
     std::string set;
     double exposure = 1.0;  ///< k: the pixel k·c went in, the result was divided by k
     bool shipped = false;   ///< through the form a user gets (OCIO processor, LUT included)
+    /// The plate convention (Plates::key()): "lit", or "balanced-cat02" /
+    /// "balanced-bradford", where input and reference are both balanced to
+    /// the working white and L*a*b* is relative to that white.
+    std::string plates = "lit";
+    /// Where the plate came from: "cie" (the colour as the observer sees
+    /// it), "camera" (the camera's record through an IDT fitted the
+    /// rawtoaces way for the shooting light) or "camera-daylight-idt" (its
+    /// record balanced by gains for the shooting light, through one IDT
+    /// fitted for the daylight). The reference is always the CIE truth.
+    std::string source = "cie";
     double mean = 0.0;
     double p95 = 0.0;
     double max = 0.0;
@@ -46,8 +56,23 @@ struct AccuracyOptions
     Observer observer = Observer::CIE1931_2DEG;
     /// The levels k the colours are seen at: 2^-8 … 2^4 of the white.
     std::vector<double> exposures = {1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0, 4.0, 16.0};
-    /// When set, every method is measured in its shipped form too.
+    /// When set, every method is measured in its shipped form too (on the
+    /// "cie" plates).
     ShippedFactory shipped;
+    /// The plate conventions measured, each a full set of rows.
+    std::vector<Plates> plates = {Plates{PlateConvention::LIT, AdaptationMethod::CAT02},
+                                  Plates{PlateConvention::BALANCED, AdaptationMethod::CAT02}};
+    /// When set, the plates are also simulated as this camera records them
+    /// (sources "camera" and "camera-daylight-idt", ideal forms), and
+    /// rootpoly-camera is measured on the daylight-IDT plates.
+    std::shared_ptr<const SpectralCamera> camera;
+    std::string idtLightName = DEFAULT_IDT_LIGHT;  ///< the daylight IDT's light
+    Spectrum idtLight;                              ///< empty: the built-in idtLightName
+    /// For each balanced convention, also the lit looks applied to the
+    /// balanced plates (plates "<key>-through-lit-looks", ideal forms, "cie"
+    /// source): the error of a pipeline that balances its plates and then
+    /// corrects the cast again.
+    bool measureMismatch = true;
 };
 
 /// The default comparison: A, C, D50, D65, E, F1–F12; every image method;
@@ -55,7 +80,10 @@ struct AccuracyOptions
 /// (100 smooth random remittances, none of them in the training set).
 AccuracyOptions DefaultAccuracyOptions();
 
-/// Measures every (method, pair, set, exposure, form). For each remittance:
+/// Measures every (plates, source, method, pair, set, exposure, form). For
+/// balanced plates the input is the colour under `from` balanced to the
+/// working white (BalanceMatrix) and the reference the colour under `to`
+/// balanced the same way. For each remittance:
 /// its colour under `from` (working RGB, white Y = 1) times k goes through
 /// the method, is divided by k and is compared in CIEDE2000 — L*a*b*
 /// relative to `to`'s white — with its colour rendered under `to`. An

@@ -12,6 +12,7 @@
 #include <Eigen/SVD>
 
 #include "spectral/ChromaticAdaptation.h"
+#include "spectral/Illuminants.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
@@ -80,6 +81,9 @@ MethodSpec ParseMethod(const std::string& name)
         {"metamer", ChangeMethod::METAMER},    {"upsample", ChangeMethod::UPSAMPLE},
         {"spectral", ChangeMethod::SPECTRAL},  {"rootpoly", ChangeMethod::ROOTPOLY},
         {"rootpoly2", ChangeMethod::ROOTPOLY}, {"rootpoly3", ChangeMethod::ROOTPOLY},
+        {"rootpoly-camera", ChangeMethod::ROOTPOLY_CAMERA},
+        {"rootpoly2-camera", ChangeMethod::ROOTPOLY_CAMERA},
+        {"rootpoly3-camera", ChangeMethod::ROOTPOLY_CAMERA},
     };
     const auto fixed = std::find_if(std::begin(kFixed), std::end(kFixed),
                                     [&](const auto& f) { return n == f.first; });
@@ -90,6 +94,11 @@ MethodSpec ParseMethod(const std::string& name)
         {
             m.degree = n == "rootpoly3" ? 3 : 2;
             m.name = m.degree == 3 ? "rootpoly3" : "rootpoly";
+        }
+        else if (m.method == ChangeMethod::ROOTPOLY_CAMERA)
+        {
+            m.degree = n == "rootpoly3-camera" ? 3 : 2;
+            m.name = m.degree == 3 ? "rootpoly3-camera" : "rootpoly-camera";
         }
     }
     else if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
@@ -135,7 +144,7 @@ MethodSpec ParseMethod(const std::string& name)
         throw Exception("unknown method '" + name +
                         "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
                         "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
-                        "rootpoly3, spectral)");
+                        "rootpoly3, rootpoly-camera, rootpoly3-camera, spectral)");
     }
     return m;
 }
@@ -206,6 +215,15 @@ std::string DescribeMethod(const MethodSpec& m)
                    " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
                    "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
                    "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
+        case ChangeMethod::ROOTPOLY_CAMERA:
+            return std::string("For plates made with one fixed ") + m.idtLightName +
+                   " IDT of camera " + (m.camera ? m.camera->name() : std::string("(none)")) +
+                   " and white-balance gains: that IDT inverted, then a root polynomial of "
+                   "degree " +
+                   (m.degree == 3 ? "3" : "2") +
+                   " fitted from the camera's record under the source light to the target "
+                   "(205 measured remittances): not linear, baked into a 3D LUT with a log2 "
+                   "shaper.";
         case ChangeMethod::SPECTRAL:
             return "The exact spectral answer for known remittances: the reference.";
     }
@@ -239,8 +257,11 @@ Mat3 MaterialTintMatrix(const std::vector<double>& remittance, const BandSet& ba
            WorkingToBandMatrix(bands, working, observer);
 }
 
-Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
-                            const RgbSpace& working, Observer observer)
+namespace
+{
+
+Mat3 LitChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
+                     const RgbSpace& working, Observer observer)
 {
     const Mat3 m = RgbToXyzMatrix(working.chromaticities);
     const Mat3 mInv = m.inverse();
@@ -278,6 +299,7 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
                                  SurfaceRenderer(to.spectrum, working, observer));
         case ChangeMethod::UPSAMPLE:
         case ChangeMethod::ROOTPOLY:
+        case ChangeMethod::ROOTPOLY_CAMERA:
         case ChangeMethod::SPECTRAL:
             throw Exception("method '" + method.name +
                             "' is not one 3x3 matrix: apply it through a Relighter (upsample, "
@@ -332,6 +354,21 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
     return mInv * basis.b * ratio.asDiagonal() * basis.pinv * m;
 }
 
+}  // namespace
+
+Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
+                            const RgbSpace& working, Observer observer)
+{
+    const Mat3 lit = LitChangeMatrix(from, to, method, working, observer);
+    if (!method.plates.balanced() || method.method == ChangeMethod::NONE)
+    {
+        return lit;
+    }
+    const AdaptationMethod a = method.plates.adaptation;
+    return BalanceMatrix(to.spectrum, working, a, observer) * lit *
+           BalanceMatrix(from.spectrum, working, a, observer).inverse();
+}
+
 struct Relighter::Spectral
 {
     SurfaceRenderer from;
@@ -360,15 +397,72 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
     m_linear = false;
     const SurfaceRenderer r1(from.spectrum, working, observer);
     const SurfaceRenderer r2(to.spectrum, working, observer);
+    // Balanced plates: back to the light's cast before the method, the
+    // balance for `to` after it.
+    const bool balanced = method.plates.balanced();
+    const AdaptationMethod adaptation = method.plates.adaptation;
+    const Mat3 balanceFrom =
+        balanced ? BalanceMatrix(from.spectrum, working, adaptation, observer) : Mat3::Identity();
+    const Mat3 balanceTo =
+        balanced ? BalanceMatrix(to.spectrum, working, adaptation, observer) : Mat3::Identity();
+    m_hasPre = balanced;
+    m_pre = balanceFrom.inverse();
     if (method.method == ChangeMethod::ROOTPOLY)
     {
-        m_rootpoly = std::make_unique<RootPolynomial>(FitRootPolynomial(
+        const RootPolynomial lit = FitRootPolynomial(
             r1, r2, method.training.empty() ? RootPolynomialTraining() : method.training,
-            method.degree));
+            method.degree);
+        m_rootpoly = std::make_unique<RootPolynomial>(method.degree, balanceTo * lit.matrix());
+        return;
+    }
+    if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
+    {
+        if (!method.camera)
+        {
+            throw Exception("method '" + method.name +
+                            "' needs the camera that shot the plates (--camera FILE)");
+        }
+        // The plates: camera RGB balanced for `from` by gains, through one
+        // IDT fitted for the daylight. Back through that IDT to the
+        // camera's balanced record, then to the colour under `from` as the
+        // camera's own IDT for `from` sees it (for the observer as camera,
+        // exactly the plain path's input); the root polynomial, fitted from
+        // those records to the truth under `to`, corrects the rest.
+        const Spectrum daylight = method.idtLight.empty()
+                                      ? BuiltinIlluminant(method.idtLightName)
+                                      : method.idtLight;
+        const SpectralCamera& camera = *method.camera;
+        const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
+        const Mat3 cameraLit =
+            BalanceMatrix(from.spectrum, working, adaptation, observer).inverse() *
+            FitIdt(camera, from.spectrum, working, adaptation, observer);
+        const CameraShot shot(camera, from.spectrum);
+        ColourFit fit;
+        for (const NamedSpectrum& t :
+             method.training.empty() ? RootPolynomialTraining() : method.training)
+        {
+            const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+            fit.input.push_back(cameraLit * shot.record(r));
+            fit.target.push_back(r2.render(r));
+        }
+        fit.whiteIn = cameraLit * Vec3::Ones();
+        fit.whiteOut = r2.white();
+        fit.rgbToXyz = r2.rgbToXyz();
+        fit.labWhite = r2.rgbToXyz() * r2.white();
+        const RootPolynomial lit = FitRootPolynomial(fit, method.degree);
+        m_rootpoly = std::make_unique<RootPolynomial>(method.degree, balanceTo * lit.matrix());
+        // Lit plates are the balanced ones with the cast put back.
+        const Mat3 plateToBalanced =
+            balanced ? Mat3::Identity()
+                     : BalanceMatrix(from.spectrum, working, adaptation, observer);
+        m_pre = cameraLit * idtDaylight.inverse() * plateToBalanced;
+        m_hasPre = true;
         return;
     }
     m_matrix = MetamerMatrix(r1, r2);
     m_spectral = std::make_unique<Spectral>(r1, r2);
+    m_hasPost = balanced;
+    m_post = balanceTo;
 }
 
 Relighter::~Relighter() = default;
@@ -384,35 +478,64 @@ Vec3 GuardPixel(const Vec3& rgb) noexcept
     return out;
 }
 
-Vec3 Relighter::apply(const Vec3& rgb) const
+Vec3 Relighter::core(const Vec3& in) const
 {
-    const Vec3 in = GuardPixel(rgb);
     if (m_rootpoly)
     {
         return m_rootpoly->apply(in);
     }
-    return m_linear ? Vec3(m_matrix * in)
-                    : UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
+    if (m_linear)
+    {
+        return m_matrix * in;
+    }
+    const Vec3 out = UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
+    return m_hasPost ? Vec3(m_post * out) : out;
+}
+
+Vec3 Relighter::apply(const Vec3& rgb) const
+{
+    const Vec3 in = GuardPixel(rgb);
+    return core(m_hasPre ? Vec3(m_pre * in) : in);
 }
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
 {
+    if (!m_hasPre && !m_rootpoly && m_linear)
+    {
+        applyAfterInput(rgb, count, threads);  // guards each pixel itself
+        return;
+    }
+    // The guard (written so NaN goes to the lower bound: (-G < NaN) is
+    // false, and the loop vectorises), the input matrix, then the method.
+    ParallelFor(count, count < (m_rootpoly ? 65536 : 1024) ? 1 : threads,
+                [&](size_t begin, size_t end)
+                {
+                    const float lo = float(-PIXEL_GUARD), hi = float(PIXEL_GUARD);
+                    for (size_t i = 3 * begin; i < 3 * end; ++i)
+                    {
+                        const float v = lo < rgb[i] ? rgb[i] : lo;
+                        rgb[i] = hi < v ? hi : v;
+                    }
+                    if (m_hasPre)
+                    {
+                        const Eigen::Matrix3f pre = m_pre.cast<float>();
+                        for (size_t i = begin; i < end; ++i)
+                        {
+                            Eigen::Map<Eigen::Vector3f> p(rgb + 3 * i);
+                            p = pre * Eigen::Vector3f(p);
+                        }
+                    }
+                    applyAfterInput(rgb + 3 * begin, end - begin, 1);
+                });
+}
+
+void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
+{
     if (m_rootpoly)
     {
-        // A few ns a pixel: the guard, then the vectorised root polynomial.
-        ParallelFor(count, count < 65536 ? 1 : threads,
-                    [&](size_t begin, size_t end)
-                    {
-                        // The guard: written so NaN goes to the lower bound
-                        // ((-G < NaN) is false) and the loop vectorises.
-                        const float lo = float(-PIXEL_GUARD), hi = float(PIXEL_GUARD);
-                        for (size_t i = 3 * begin; i < 3 * end; ++i)
-                        {
-                            const float v = lo < rgb[i] ? rgb[i] : lo;
-                            rgb[i] = hi < v ? hi : v;
-                        }
-                        m_rootpoly->apply(rgb + 3 * begin, end - begin);
-                    });
+        // A few ns a pixel: the vectorised root polynomial.
+        ParallelFor(count, count < 65536 ? 1 : threads, [&](size_t begin, size_t end)
+                    { m_rootpoly->apply(rgb + 3 * begin, end - begin); });
         return;
     }
     auto run = [&](size_t begin, size_t end)
@@ -423,9 +546,20 @@ void Relighter::apply(float* rgb, size_t count, int threads) const
         {
             float* p = rgb + 3 * i;
             const Vec3 in = GuardPixel(Vec3(p[0], p[1], p[2]));
-            const Vec3 out = m_linear ? Vec3(m_matrix * in)
-                                      : UpsampleRelight(m_spectral->upsampler, m_spectral->to,
-                                                        m_matrix, in, &warm, &cache);
+            Vec3 out;
+            if (m_linear)
+            {
+                out = m_matrix * in;
+            }
+            else
+            {
+                out = UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in, &warm,
+                                      &cache);
+                if (m_hasPost)
+                {
+                    out = m_post * out;
+                }
+            }
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());

@@ -11,6 +11,8 @@
 #include "spectral/Spectrum.h"
 #include "spectral/SpectrumIO.h"
 #include "transforms/BandSet.h"
+#include "transforms/Camera.h"
+#include "transforms/Plates.h"
 #include "transforms/RootPolynomial.h"
 
 namespace bandlight
@@ -30,6 +32,9 @@ enum class ChangeMethod
     METAMER,    ///< smoothest remittance reproducing the pixel under S1, re-lit
     UPSAMPLE,   ///< sigmoid-polynomial remittance (Jakob & Hanika 2019), re-lit: not linear
     ROOTPOLY,   ///< root-polynomial regression (Finlayson et al. 2015) on measured remittances
+    /// rootpoly fitted from a camera's own record: for plates made with one
+    /// fixed daylight IDT and white-balance gains
+    ROOTPOLY_CAMERA,
     SPECTRAL,   ///< the exact answer for known spectra: the reference, not an image transform
 };
 
@@ -39,7 +44,8 @@ enum class ChangeMethod
 /// "bands380-480-560-780" (edges in nm, "-wp" appended for the
 /// white-preserving form: no ':' or '=' so it can name looks), "fit3x3",
 /// "prefilter", "metamer", "upsample", "rootpoly" (degree 2), "rootpoly3"
-/// (degree 3), "spectral".
+/// (degree 3), "rootpoly-camera" / "rootpoly3-camera" (need `camera`),
+/// "spectral".
 struct MethodSpec
 {
     ChangeMethod method = ChangeMethod::NONE;
@@ -49,6 +55,17 @@ struct MethodSpec
     /// TrainingSet() and RootPolynomialTraining()).
     std::vector<NamedSpectrum> training;
     int degree = 2;  ///< rootpoly's degree
+    /// What the images are: lit by the source light (the default at this
+    /// level: the physical change between two lights) or white-balanced to
+    /// the working white, in which case the method is wrapped in the
+    /// inverse balance for `from` and the balance for `to`. `none` stays the
+    /// identity in both conventions: it is what doing nothing does.
+    Plates plates;
+    /// rootpoly-camera: the camera that shot the plates, and the light its
+    /// one fixed IDT was fitted for (empty spectrum: DEFAULT_IDT_LIGHT).
+    std::shared_ptr<const SpectralCamera> camera;
+    std::string idtLightName = DEFAULT_IDT_LIGHT;
+    Spectrum idtLight;
 
     bool usesBands() const noexcept
     {
@@ -58,7 +75,7 @@ struct MethodSpec
     bool isLinear() const noexcept
     {
         return method != ChangeMethod::UPSAMPLE && method != ChangeMethod::ROOTPOLY &&
-               method != ChangeMethod::SPECTRAL;
+               method != ChangeMethod::ROOTPOLY_CAMERA && method != ChangeMethod::SPECTRAL;
     }
 };
 
@@ -93,7 +110,8 @@ struct Light
 /// band model's white keeps its luminance. Throws Exception when an
 /// illuminant has no power in a band, or a band coordinate of a white is
 /// not positive (band-wp), and for the methods that are not one 3×3
-/// (upsample, spectral: see Relighter).
+/// (upsample, rootpoly, spectral: see Relighter). For balanced plates
+/// (method.plates) the matrix is Bal(to) · M · Bal(from)⁻¹ (BalanceMatrix).
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
                             const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
 
@@ -128,8 +146,13 @@ public:
     /// The 3×3 of a linear method; for upsample, the linear fallback used
     /// for pixels with no positive channel (the metamer matrix).
     const Mat3& matrix() const noexcept { return m_matrix; }
-    /// rootpoly's fitted map (nullptr for other methods).
+    /// rootpoly's fitted map (nullptr for other methods); for balanced
+    /// plates it includes the balance for `to`.
     const RootPolynomial* rootPolynomial() const noexcept { return m_rootpoly.get(); }
+    /// The 3×3 a non-linear method applies to the guarded pixel before its
+    /// own work (balanced plates: the inverse balance for `from`;
+    /// rootpoly-camera: the way back to the camera's record), or nullptr.
+    const Mat3* inputMatrix() const noexcept { return m_hasPre ? &m_pre : nullptr; }
 
     /// One pixel, working RGB under `from` → as if under `to`; any input,
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
@@ -137,10 +160,18 @@ public:
     /// `count` interleaved RGB float triples in place, on `threads` threads
     /// (0: all cores), neighbours warm-starting each other's fits.
     void apply(float* rgb, size_t count, int threads = 0) const;
+    /// The same without the guard and inputMatrix(): what a LUT placed
+    /// after a guard and that matrix has to hold.
+    void applyAfterInput(float* rgb, size_t count, int threads = 0) const;
 
 private:
     struct Spectral;
+    Vec3 core(const Vec3& in) const;
     bool m_linear = true;
+    bool m_hasPre = false;
+    bool m_hasPost = false;
+    Mat3 m_pre = Mat3::Identity();
+    Mat3 m_post = Mat3::Identity();
     Mat3 m_matrix = Mat3::Identity();
     std::unique_ptr<Spectral> m_spectral;
     std::unique_ptr<RootPolynomial> m_rootpoly;

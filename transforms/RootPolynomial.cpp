@@ -35,20 +35,21 @@ Mat3 LabJacobian(const Vec3& xyz, const Vec3& white)
     return j;
 }
 
-Eigen::MatrixXd Fit(const SurfaceRenderer& from, const SurfaceRenderer& to,
-                    const std::vector<NamedSpectrum>& training, int degree, double ridge)
+Eigen::MatrixXd Fit(const ColourFit& data, int degree, double ridge)
 {
+    if (data.input.size() != data.target.size())
+    {
+        throw Exception("root-polynomial fit: as many inputs as targets are needed");
+    }
     const int t = degree == 1 ? 3 : RootPolynomial::Terms(degree);
     const int n = 3 * t;  // unknowns: M row by row
-    const Vec3 whiteXyz = to.rgbToXyz() * to.white();
     Eigen::MatrixXd ata = Eigen::MatrixXd::Zero(n, n);
     Eigen::VectorXd atb = Eigen::VectorXd::Zero(n);
     Eigen::VectorXd phi(t);
-    for (const NamedSpectrum& s : training)
+    for (size_t i = 0; i < data.input.size(); ++i)
     {
-        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(s.spectrum);
-        const Vec3 c1 = from.render(r);
-        const Vec3 c2 = to.render(r);
+        const Vec3& c1 = data.input[i];
+        const Vec3& c2 = data.target[i];
         if (degree == 1)
         {
             phi = c1;
@@ -58,7 +59,7 @@ Eigen::MatrixXd Fit(const SurfaceRenderer& from, const SurfaceRenderer& to,
             RootPolynomial::Features(c1, degree, phi.data());
         }
         // Residual in L*a*b*: J · (M φ − c2), J = dLab/dXYZ · RGB→XYZ.
-        const Mat3 j = LabJacobian(to.rgbToXyz() * c2, whiteXyz) * to.rgbToXyz();
+        const Mat3 j = LabJacobian(data.rgbToXyz * c2, data.labWhite) * data.rgbToXyz;
         Eigen::MatrixXd a(3, n);  // J · (I3 ⊗ φᵀ)
         for (int row = 0; row < 3; ++row)
         {
@@ -75,11 +76,11 @@ Eigen::MatrixXd Fit(const SurfaceRenderer& from, const SurfaceRenderer& to,
     Eigen::VectorXd phiW(t);
     if (degree == 1)
     {
-        phiW = from.white();
+        phiW = data.whiteIn;
     }
     else
     {
-        RootPolynomial::Features(from.white(), degree, phiW.data());
+        RootPolynomial::Features(data.whiteIn, degree, phiW.data());
     }
     Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + 3, n + 3);
     Eigen::VectorXd rhs(n + 3);
@@ -89,7 +90,7 @@ Eigen::MatrixXd Fit(const SurfaceRenderer& from, const SurfaceRenderer& to,
     {
         kkt.block(n + k, k * t, 1, t) = phiW.transpose();
         kkt.block(k * t, n + k, t, 1) = phiW;
-        rhs(n + k) = to.white()(k);
+        rhs(n + k) = data.whiteOut(k);
     }
     const Eigen::VectorXd x = kkt.fullPivLu().solve(rhs);
     if (!x.allFinite())
@@ -211,21 +212,48 @@ void RootPolynomial::apply(float* rgb, size_t count) const noexcept
     }
 }
 
-RootPolynomial FitRootPolynomial(const SurfaceRenderer& from, const SurfaceRenderer& to,
-                                 const std::vector<NamedSpectrum>& training, int degree,
-                                 double ridge)
+ColourFit ColourFit::Relight(const SurfaceRenderer& from, const SurfaceRenderer& to,
+                             const std::vector<NamedSpectrum>& training)
+{
+    ColourFit d;
+    for (const NamedSpectrum& s : training)
+    {
+        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(s.spectrum);
+        d.input.push_back(from.render(r));
+        d.target.push_back(to.render(r));
+    }
+    d.whiteIn = from.white();
+    d.whiteOut = to.white();
+    d.rgbToXyz = to.rgbToXyz();
+    d.labWhite = to.rgbToXyz() * to.white();
+    return d;
+}
+
+RootPolynomial FitRootPolynomial(const ColourFit& data, int degree, double ridge)
 {
     if (degree != 2 && degree != 3)
     {
         throw Exception("root polynomial: degree must be 2 or 3");
     }
-    return RootPolynomial(degree, Fit(from, to, training, degree, ridge));
+    return RootPolynomial(degree, Fit(data, degree, ridge));
+}
+
+Mat3 FitLabMatrix(const ColourFit& data)
+{
+    return Fit(data, 1, 0.0);
+}
+
+RootPolynomial FitRootPolynomial(const SurfaceRenderer& from, const SurfaceRenderer& to,
+                                 const std::vector<NamedSpectrum>& training, int degree,
+                                 double ridge)
+{
+    return FitRootPolynomial(ColourFit::Relight(from, to, training), degree, ridge);
 }
 
 Mat3 FitLabMatrix(const SurfaceRenderer& from, const SurfaceRenderer& to,
                   const std::vector<NamedSpectrum>& training)
 {
-    return Fit(from, to, training, 1, 0.0);
+    return FitLabMatrix(ColourFit::Relight(from, to, training));
 }
 
 const std::vector<NamedSpectrum>& RootPolynomialTraining()

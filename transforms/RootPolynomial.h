@@ -46,6 +46,34 @@ private:
     float m_f[3][13] = {};  ///< the matrix as floats, for the fast path
 };
 
+/// What a fit is given: colours in and the colours they should become
+/// (linear RGB), the white that must map exactly (whiteIn → whiteOut), and
+/// how to see the targets in CIELAB (their RGB → XYZ and the reference
+/// white's XYZ) for the error weights.
+struct ColourFit
+{
+    std::vector<Vec3> input;
+    std::vector<Vec3> target;
+    Vec3 whiteIn = Vec3::Ones();
+    Vec3 whiteOut = Vec3::Ones();
+    Mat3 rgbToXyz = Mat3::Identity();
+    Vec3 labWhite = Vec3::Ones();
+
+    /// The training remittances' colours under `from` → under `to`, whites
+    /// and L*a*b* those of `to`.
+    static ColourFit Relight(const SurfaceRenderer& from, const SurfaceRenderer& to,
+                             const std::vector<NamedSpectrum>& training);
+};
+
+/// Fits M minimising the squared CIELAB error of M·φ(input) against the
+/// targets to first order (each residual weighted by the Jacobian of
+/// L*a*b* at its target), with whiteIn mapped exactly onto whiteOut and a
+/// ridge of `ridge` × the mean diagonal of the normal matrix.
+RootPolynomial FitRootPolynomial(const ColourFit& data, int degree, double ridge = 1e-7);
+
+/// The same for a plain 3×3, white preserved (degree 1, no ridge).
+Mat3 FitLabMatrix(const ColourFit& data);
+
 /// Fits the root polynomial that takes remittances' colours under `from`
 /// to their colours under `to` (working RGB, white Y = 1), minimising the
 /// squared CIELAB error to first order: each colour's residual is weighted

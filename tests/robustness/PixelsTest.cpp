@@ -237,8 +237,10 @@ TEST_CASE("bandlight apply gives the same defined results on a float EXR of hard
                                    method + " --working-space acescg");
         REQUIRE(r.code == 0);
         const std::vector<float> got = ReadFloatImage(out, width, 1, 3);
-        const auto cpu =
-            Cpu(IlluminantChangeTransform(A(), D65(), ParseMethod(method), FindRgbSpace("acescg")));
+        // The command's default plates: white-balanced (CAT02).
+        MethodSpec spec = ParseMethod(method);
+        spec.plates = ParsePlates("balanced", "cat02");
+        const auto cpu = Cpu(IlluminantChangeTransform(A(), D65(), spec, FindRgbSpace("acescg")));
         for (int i = 0; i < width; ++i)
         {
             INFO(method << ": " << hard[size_t(i)].label);

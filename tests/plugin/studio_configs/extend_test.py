@@ -13,7 +13,7 @@ own config when it is installed:
      OCIO re-serialises it, 1e-5 against the original file);
   3. with bandlight's additions removed, the result serialises to the same
      text as the base re-serialised by OpenColorIO (nothing of the base lost);
-  4. the bradford A -> D65 look equals an independent Bradford matrix in the
+  4. the bradford A -> D65 look (written for lit plates) equals an independent Bradford matrix in the
      primaries bandlight identified (2e-3), and those primaries are the ones
      the config was built with;
   5. the base folder and the result moved together still work (relative
@@ -145,7 +145,7 @@ def main():
         out = os.path.join(work, "extended", name)
         r = subprocess.run([exe, "config", "--base", base_path, "--out", out, "--illuminants",
                             "A,D65,F11", "--methods", "bradford,band3,upsample",
-                            "--lut-size", "17"],
+                            "--lut-size", "17", "--plates", "lit"],
                            capture_output=True, text=True)
         check(r.returncode == 0, f"{name}: bandlight config --base exits 0 ({r.stderr.strip()})")
         if r.returncode != 0:

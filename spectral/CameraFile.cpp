@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "spectral/CameraFile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
+
+namespace bandlight
+{
+
+namespace
+{
+
+std::string Lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+std::string Num(double v)
+{
+    std::ostringstream o;
+    o.precision(6);
+    o << v;
+    return o.str();
+}
+
+/// 1-based line of byte offset `pos` in `text`.
+size_t LineOf(const std::string& text, size_t pos)
+{
+    pos = std::min(pos, text.size());
+    return size_t(1) + size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(pos), '\n'));
+}
+
+void CheckChannel(const Spectrum& s, const std::string& what, const std::string& source)
+{
+    double peak = 0.0;
+    for (double v : s.values())
+    {
+        peak = std::max(peak, v);
+    }
+    bool visible = false;
+    for (size_t i = 0; i < s.size(); ++i)
+    {
+        const double l = s.wavelength(i);
+        if (l >= 380.0 && l <= 780.0 && s[i] > 0.0)
+        {
+            visible = true;
+        }
+        if (s[i] < -0.01 * peak)
+        {
+            throw Exception(source + ": the " + what + " channel responds " + Num(s[i]) +
+                            " at " + std::to_string(int(std::lround(l))) +
+                            " nm: a sensitivity is not negative beyond noise (1 % of its peak)");
+        }
+    }
+    if (!visible)
+    {
+        throw Exception(source + ": the " + what +
+                        " channel has no response over 380-780 nm: not a camera sensitivity");
+    }
+}
+
+CameraSensitivities Finish(CameraSensitivities cam, const std::string& source)
+{
+    CheckChannel(cam.red, "red", source);
+    CheckChannel(cam.green, "green", source);
+    CheckChannel(cam.blue, "blue", source);
+    return cam;
+}
+
+CameraSensitivities ReadJson(const std::string& text, const std::string& source)
+{
+    nlohmann::json j;
+    try
+    {
+        j = nlohmann::json::parse(text);
+    }
+    catch (const nlohmann::json::parse_error& e)
+    {
+        throw Exception(source + ":" + std::to_string(LineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
+                        ": not valid JSON: " + OneLine(e.what(), 200));
+    }
+    const auto need = [&](const nlohmann::json& parent, const char* key,
+                          const std::string& path) -> const nlohmann::json&
+    {
+        if (!parent.is_object() || !parent.contains(key))
+        {
+            throw Exception(source + ": no \"" + path + "\" in this camera file (rawtoaces JSON: "
+                            "spectral_data.data.main maps wavelengths to [R, G, B])");
+        }
+        return parent.at(key);
+    };
+    const nlohmann::json& sd = need(j, "spectral_data", "spectral_data");
+    const nlohmann::json& main = need(need(sd, "data", "spectral_data.data"), "main",
+                                      "spectral_data.data.main");
+    if (!main.is_object() || main.size() < 2)
+    {
+        throw Exception(source + ": spectral_data.data.main must map at least two wavelengths to "
+                                 "[R, G, B]");
+    }
+    if (main.size() > MAX_SPECTRUM_SAMPLES)
+    {
+        throw Exception(source + ": " + std::to_string(main.size()) + " wavelengths; at most " +
+                        std::to_string(MAX_SPECTRUM_SAMPLES) + " are read");
+    }
+    // Channel order from index.main (default R, G, B).
+    int order[3] = {0, 1, 2};
+    if (sd.contains("index") && sd.at("index").is_object() && sd.at("index").contains("main"))
+    {
+        const nlohmann::json& idx = sd.at("index").at("main");
+        if (!idx.is_array() || idx.size() != 3)
+        {
+            throw Exception(source + ": spectral_data.index.main must name three channels, R, G "
+                                     "and B");
+        }
+        bool seen[3] = {false, false, false};
+        for (int k = 0; k < 3; ++k)
+        {
+            const std::string n = idx.at(size_t(k)).is_string()
+                                      ? Lower(idx.at(size_t(k)).get<std::string>())
+                                      : std::string();
+            const int c = n == "r" || n == "red" ? 0 : n == "g" || n == "green" ? 1 : n == "b" || n == "blue" ? 2 : -1;
+            if (c < 0 || seen[c])
+            {
+                throw Exception(source + ": spectral_data.index.main must name R, G and B once "
+                                         "each, got " +
+                                OneLine(idx.dump(), 200));
+            }
+            seen[c] = true;
+            order[k] = c;
+        }
+    }
+    std::vector<std::pair<double, Vec3>> rows;
+    for (auto it = main.begin(); it != main.end(); ++it)
+    {
+        const std::string& key = it.key();
+        const auto bad = [&](const std::string& why)
+        {
+            throw Exception(source + ": spectral_data.data.main \"" + OneLine(key, 60) + "\": " +
+                            why);
+        };
+        char* end = nullptr;
+        const double wl = std::strtod(key.c_str(), &end);
+        if (key.empty() || end != key.c_str() + key.size() || !std::isfinite(wl) || wl <= 0.0 ||
+            wl > 1e5)
+        {
+            bad("not a wavelength in nm (0-100000)");
+        }
+        const nlohmann::json& v = it.value();
+        if (!v.is_array() || v.size() != 3)
+        {
+            bad("needs three numbers [R, G, B]");
+        }
+        Vec3 rgb;
+        for (int k = 0; k < 3; ++k)
+        {
+            const nlohmann::json& x = v.at(size_t(k));
+            if (!x.is_number() || !std::isfinite(x.get<double>()) ||
+                std::fabs(x.get<double>()) > 1e30)
+            {
+                bad("value " + OneLine(x.dump(), 60) + " is not a finite number");
+            }
+            rgb[order[k]] = x.get<double>();
+        }
+        rows.emplace_back(wl, rgb);
+    }
+    std::sort(rows.begin(), rows.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    const double step = rows[1].first - rows[0].first;
+    for (size_t i = 1; i < rows.size(); ++i)
+    {
+        const double d = rows[i].first - rows[i - 1].first;
+        if (!(d > 0.0) || std::fabs(d - step) > 1e-6 * std::max(1.0, step))
+        {
+            throw Exception(source + ": wavelengths " + Num(rows[i - 1].first) + " and " +
+                            Num(rows[i].first) +
+                            " break the regular grid (step " + Num(step) +
+                            " nm): camera files must be sampled on a regular grid");
+        }
+    }
+    CameraSensitivities cam;
+    std::vector<double> ch[3];
+    for (const auto& r : rows)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            ch[c].push_back(r.second[c]);
+        }
+    }
+    cam.red = Spectrum(rows.front().first, step, ch[0]);
+    cam.green = Spectrum(rows.front().first, step, ch[1]);
+    cam.blue = Spectrum(rows.front().first, step, ch[2]);
+    std::string name;
+    if (j.contains("header") && j.at("header").is_object())
+    {
+        for (const char* k : {"manufacturer", "model"})
+        {
+            if (j.at("header").contains(k) && j.at("header").at(k).is_string())
+            {
+                name += (name.empty() ? "" : " ") + j.at("header").at(k).get<std::string>();
+            }
+        }
+    }
+    cam.name = name.empty() ? source : OneLine(name, 120);
+    return Finish(std::move(cam), source);
+}
+
+}  // namespace
+
+CameraSensitivities ReadCameraText(const std::string& text, const std::string& source)
+{
+    const size_t first = text.find_first_not_of(" \t\r\n\xef\xbb\xbf");
+    if (first != std::string::npos && text[first] == '{')
+    {
+        return ReadJson(text, source);
+    }
+    const std::vector<NamedSpectrum> spectra = ReadSpectraText(text, source);
+    if (spectra.size() != 3)
+    {
+        throw Exception(source + ": a camera file holds three spectra (R, G, B), this one has " +
+                        std::to_string(spectra.size()));
+    }
+    int index[3] = {-1, -1, -1};
+    for (int k = 0; k < 3; ++k)
+    {
+        const std::string n = Lower(spectra[size_t(k)].name);
+        const int c = n == "r" || n == "red" ? 0 : n == "g" || n == "green" ? 1 : n == "b" || n == "blue" ? 2 : -1;
+        if (c >= 0 && index[c] < 0)
+        {
+            index[c] = k;
+        }
+    }
+    if (index[0] < 0 || index[1] < 0 || index[2] < 0)
+    {
+        index[0] = 0;  // not named R, G, B: taken in file order
+        index[1] = 1;
+        index[2] = 2;
+    }
+    CameraSensitivities cam;
+    cam.name = source;
+    cam.red = spectra[size_t(index[0])].spectrum;
+    cam.green = spectra[size_t(index[1])].spectrum;
+    cam.blue = spectra[size_t(index[2])].spectrum;
+    return Finish(std::move(cam), source);
+}
+
+CameraSensitivities ReadCameraFile(const std::string& path)
+{
+    std::string text = ReadTextFile(path, "camera file");
+    CheckUtf8Text(text, path);
+    return ReadCameraText(text, path);
+}
+
+CameraSensitivities ObserverCamera(Observer observer)
+{
+    const MatchingFunctions& cmf = GetMatchingFunctions(observer);
+    CameraSensitivities cam;
+    cam.name = observer == Observer::CIE1964_10DEG ? "CIE 1964 10° observer" : "CIE 1931 2° observer";
+    cam.red = cmf.x;
+    cam.green = cmf.y;
+    cam.blue = cmf.z;
+    return cam;
+}
+
+}  // namespace bandlight

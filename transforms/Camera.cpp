@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "transforms/Camera.h"
+
+#include <Eigen/LU>
+
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "transforms/Plates.h"
+#include "transforms/RootPolynomial.h"
+
+namespace bandlight
+{
+
+SpectralCamera::SpectralCamera(const CameraSensitivities& s) : m_name(s.name)
+{
+    for (int c = 0; c < 3; ++c)
+    {
+        const Spectrum& ch = s.channel(c);
+        for (int i = 0; i < SurfaceRenderer::kSamples; ++i)
+        {
+            const double l = SurfaceRenderer::Wavelength(i);
+            // Zero outside the measured range: a sensitivity is not extended.
+            m_s(c, i) = (l < ch.start() - 1e-9 || l > ch.end() + 1e-9) ? 0.0 : ch(l);
+        }
+    }
+}
+
+CameraShot::CameraShot(const SpectralCamera& camera, const Spectrum& light)
+{
+    Eigen::Matrix<double, 1, SurfaceRenderer::kSamples> s;
+    for (int i = 0; i < SurfaceRenderer::kSamples; ++i)
+    {
+        s(i) = light(SurfaceRenderer::Wavelength(i));
+    }
+    m_a = camera.sensitivities().array().rowwise() * s.array();
+    const Vec3 white = m_a.rowwise().sum();
+    for (int c = 0; c < 3; ++c)
+    {
+        if (!(white[c] > 0.0) || !std::isfinite(white[c]))
+        {
+            throw Exception("camera " + camera.name() + ": its " +
+                            (c == 0 ? "red" : c == 1 ? "green" : "blue") +
+                            " channel records nothing under this light: no white balance exists");
+        }
+        m_gains[c] = 1.0 / white[c];
+    }
+    m_a = m_gains.asDiagonal() * m_a;
+}
+
+Mat3 FitIdt(const SpectralCamera& camera, const Spectrum& light, const RgbSpace& working,
+            AdaptationMethod adaptation, Observer observer,
+            const std::vector<NamedSpectrum>& training)
+{
+    const CameraShot shot(camera, light);
+    const SurfaceRenderer eye(light, working, observer);
+    const Mat3 balance = BalanceMatrix(light, working, adaptation, observer);
+    ColourFit fit;
+    for (const NamedSpectrum& t : training.empty() ? Rawtoaces190() : training)
+    {
+        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+        fit.input.push_back(shot.record(r));
+        fit.target.push_back(balance * eye.render(r));
+    }
+    fit.whiteIn = Vec3::Ones();
+    fit.whiteOut = Vec3::Ones();
+    fit.rgbToXyz = eye.rgbToXyz();
+    fit.labWhite = WorkingWhiteXyz(working);
+    const Mat3 idt = FitLabMatrix(fit);
+    if (!idt.allFinite() || std::abs(idt.determinant()) < 1e-12)
+    {
+        throw Exception("camera " + camera.name() +
+                        ": its channels do not separate colours (the fitted input transform is "
+                        "singular)");
+    }
+    return idt;
+}
+
+}  // namespace bandlight

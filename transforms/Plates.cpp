@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "transforms/Plates.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <Eigen/LU>
+
+#include "spectral/Exception.h"
+#include "transforms/SurfaceRenderer.h"
+
+namespace bandlight
+{
+
+namespace
+{
+std::string Lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+}  // namespace
+
+std::string AdaptationName(AdaptationMethod method)
+{
+    switch (method)
+    {
+        case AdaptationMethod::BRADFORD:
+            return "bradford";
+        case AdaptationMethod::CAT02:
+            return "cat02";
+        case AdaptationMethod::XYZ_SCALING:
+            return "vonkries";
+        case AdaptationMethod::SHARP:
+            return "sharp";
+    }
+    return "cat02";
+}
+
+std::string Plates::key() const
+{
+    return balanced() ? "balanced-" + AdaptationName(adaptation) : "lit";
+}
+
+std::string Plates::describe(const std::string& workingSpaceName) const
+{
+    if (!balanced())
+    {
+        return "For lit plates: images that carry the source light's cast, as the eye would "
+               "record them without adapting.";
+    }
+    return std::string("For white-balanced plates (the ACES convention): images balanced to ") +
+           workingSpaceName + "'s white by " +
+           (adaptation == AdaptationMethod::BRADFORD ? "Bradford" : "CAT02") +
+           "; the look undoes that balance, changes the light and balances again, so neutrals "
+           "stay neutral.";
+}
+
+Plates ParsePlates(const std::string& convention, const std::string& adaptation)
+{
+    Plates p;
+    const std::string c = Lower(convention);
+    if (c == "lit")
+    {
+        p.convention = PlateConvention::LIT;
+    }
+    else if (c == "balanced")
+    {
+        p.convention = PlateConvention::BALANCED;
+    }
+    else
+    {
+        throw Exception("unknown plates '" + convention + "' (lit, balanced)");
+    }
+    const std::string a = Lower(adaptation);
+    if (a == "cat02")
+    {
+        p.adaptation = AdaptationMethod::CAT02;
+    }
+    else if (a == "bradford")
+    {
+        p.adaptation = AdaptationMethod::BRADFORD;
+    }
+    else
+    {
+        throw Exception("unknown adaptation '" + adaptation + "' (cat02, bradford)");
+    }
+    return p;
+}
+
+Vec3 WorkingWhiteXyz(const RgbSpace& working)
+{
+    return RgbToXyzMatrix(working.chromaticities) * Vec3::Ones();
+}
+
+Mat3 BalanceMatrix(const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
+                   Observer observer)
+{
+    const SurfaceRenderer r(light, working, observer);
+    const Vec3 white = r.rgbToXyz() * r.white();
+    if (!(white.y() > 0.0) || !white.allFinite())
+    {
+        throw Exception("an illuminant with no luminance cannot be balanced");
+    }
+    return r.rgbToXyz().inverse() * AdaptationMatrix(white, WorkingWhiteXyz(working), adaptation) *
+           r.rgbToXyz();
+}
+
+}  // namespace bandlight

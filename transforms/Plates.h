@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/Spectrum.h"
+
+namespace bandlight
+{
+
+/// What a pipeline's images are, as far as the light's colour goes.
+enum class PlateConvention
+{
+    /// Lit by the source light as the eye would record it without adapting:
+    /// a tungsten plate is orange, and the look takes the cast away.
+    LIT,
+    /// White-balanced to the working space's white (the ACES convention: a
+    /// camera's IDT, rawtoaces' and the vendors' alike, balances): a
+    /// tungsten plate's white is neutral and only the light's colour
+    /// rendering is left in it. The look undoes the balance with the
+    /// adaptation's inverse, changes the light, and balances again, so a
+    /// neutral stays neutral and only the change in colour rendering is
+    /// applied.
+    BALANCED,
+};
+
+/// A plate convention with the chromatic adaptation that did the balancing.
+struct Plates
+{
+    PlateConvention convention = PlateConvention::LIT;
+    /// CAT02 is what rawtoaces balances with; Bradford is common in
+    /// camera vendors' IDTs and ICC profiles.
+    AdaptationMethod adaptation = AdaptationMethod::CAT02;
+
+    bool balanced() const noexcept { return convention == PlateConvention::BALANCED; }
+    /// "lit" or "balanced-cat02" / "balanced-bradford": for reports and JSON.
+    std::string key() const;
+    /// One sentence for config and look descriptions.
+    std::string describe(const std::string& workingSpaceName) const;
+};
+
+/// Parses --plates (lit, balanced) and --adaptation (cat02, bradford);
+/// throws Exception naming the choices otherwise.
+Plates ParsePlates(const std::string& convention, const std::string& adaptation = "cat02");
+
+/// "cat02" or "bradford" (other adaptations are not offered for plates).
+std::string AdaptationName(AdaptationMethod method);
+
+/// The balancing matrix in working RGB: a colour seen under `light` (its
+/// white reflector at Y = 1) → the same colour balanced to the working
+/// space's white, M⁻¹ · CAT(W_light → W_working) · M. It maps the light's
+/// white exactly onto RGB (1, 1, 1). Whites are the perfect reflector
+/// rendered on SurfaceRenderer's grid, as every method sees them.
+Mat3 BalanceMatrix(const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
+                   Observer observer = Observer::CIE1931_2DEG);
+
+/// XYZ of the working space's white with Y = 1: the L*a*b* reference white
+/// of balanced images.
+Vec3 WorkingWhiteXyz(const RgbSpace& working);
+
+}  // namespace bandlight
