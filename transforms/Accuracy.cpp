@@ -301,59 +301,83 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                         {
                             continue;
                         }
+                        // A form takes the plates (already scaled by k) and gives the
+                        // predictions: the ideal form in double precision (the method's
+                        // exact answer), the shipped one as a host runs it, in float.
+                        using Batch = std::function<void(std::vector<Vec3>&)>;
                         struct Form
                         {
                             bool shipped;
-                            PixelBatch apply;
+                            Batch apply;
                             std::string plates;
                         };
-                        std::vector<Form> forms = {
-                            {false, [relight](float* rgb, size_t n) { relight->apply(rgb, n, 1); },
-                             plates.key()}};
+                        const auto exact = [](const std::shared_ptr<Relighter>& r) -> Batch
+                        {
+                            return [r](std::vector<Vec3>& px)
+                            {
+                                for (Vec3& p : px)
+                                {
+                                    p = r->apply(p);
+                                }
+                            };
+                        };
+                        const auto asFloat = [](const PixelBatch& f) -> Batch
+                        {
+                            return [f](std::vector<Vec3>& px)
+                            {
+                                std::vector<float> buffer(3 * px.size());
+                                for (size_t i = 0; i < px.size(); ++i)
+                                {
+                                    for (int ch = 0; ch < 3; ++ch)
+                                    {
+                                        buffer[3 * i + size_t(ch)] = float(px[i][ch]);
+                                    }
+                                }
+                                f(buffer.data(), px.size());
+                                for (size_t i = 0; i < px.size(); ++i)
+                                {
+                                    px[i] = Vec3(buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]);
+                                }
+                            };
+                        };
+                        std::vector<Form> forms = {{false, exact(relight), plates.key()}};
                         if (o.shipped && source.name == "cie")
                         {
                             if (PixelBatch shipped = o.shipped(from, to, method))
                             {
-                                forms.push_back({true, shipped, plates.key()});
+                                forms.push_back({true, asFloat(shipped), plates.key()});
                             }
                         }
                         if (litLooks && source.name == "cie")
                         {
                             forms.push_back(
-                                {false,
-                                 [litLooks](float* rgb, size_t n) { litLooks->apply(rgb, n, 1); },
-                                 plates.key() + "-through-lit-looks"});
+                                {false, exact(litLooks), plates.key() + "-through-lit-looks"});
                         }
                         for (size_t s = 0; s < o.sets.size(); ++s)
                         {
                             const size_t n = samples[s].size();
                             std::vector<Vec3> reference(n);
-                            std::vector<float> buffer(3 * n * o.exposures.size());
                             for (size_t i = 0; i < n; ++i)
                             {
                                 reference[i] = pp.balanceTo * r2.render(samples[s][i]);
                             }
                             for (const Form& form : forms)
                             {
+                                std::vector<Vec3> px(n * o.exposures.size());
                                 for (size_t e = 0; e < o.exposures.size(); ++e)
                                 {
                                     for (size_t i = 0; i < n; ++i)
                                     {
-                                        const Vec3 c = o.exposures[e] * source.plate[s][i];
-                                        for (int ch = 0; ch < 3; ++ch)
-                                        {
-                                            buffer[3 * (e * n + i) + size_t(ch)] = float(c[ch]);
-                                        }
+                                        px[e * n + i] = o.exposures[e] * source.plate[s][i];
                                     }
                                 }
-                                form.apply(buffer.data(), n * o.exposures.size());
+                                form.apply(px);
                                 for (size_t e = 0; e < o.exposures.size(); ++e)
                                 {
                                     std::vector<Vec3> predicted(n);
                                     for (size_t i = 0; i < n; ++i)
                                     {
-                                        const float* p = &buffer[3 * (e * n + i)];
-                                        predicted[i] = Vec3(p[0], p[1], p[2]) / o.exposures[e];
+                                        predicted[i] = px[e * n + i] / o.exposures[e];
                                     }
                                     rows.push_back(MakeRow(
                                         method.name, from, to, o.sets[s].name, o.exposures[e],
