@@ -76,15 +76,22 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
     // upsample fits every pixel at one level: neighbouring lattice nodes on
     // one ray through black share their fit (the cache), so a 33^3 lattice
     // needs about a tenth of the fits.
-    // A non-linear method's input matrix (balanced plates: back to the
-    // light's cast; rootpoly-camera: back to the camera's record) is exact
-    // in front of the LUT, which holds only the method itself.
-    OCIO::GroupTransformRcPtr lattice = LatticeTransform(
-        [relighter](float* rgb, size_t count) { relighter->applyAfterInput(rgb, count); }, shaper,
-        lutSize);
-    OCIO::GroupTransformRcPtr g = lattice;
-    if (const Mat3* input = relighter->inputMatrix())
+    // For balanced plates the whole method is baked, balance included: a
+    // balanced grey lies on the lattice's diagonal, where the log2 shaper
+    // makes the exact transform linear and the LUT reproduces it to float
+    // precision. For lit plates an input matrix (rootpoly-camera's way back
+    // to the camera's record) stays exact in front of the LUT, which then
+    // sees colours where plain lit looks' LUTs do: lit plates under a warm
+    // light crowd the lattice's blue face, where the function's negative
+    // neighbours are clamped.
+    const Mat3* input = method.plates.balanced() ? nullptr : relighter->inputMatrix();
+    OCIO::GroupTransformRcPtr g = LatticeTransform(
+        [relighter, input](float* rgb, size_t count)
+        { input ? relighter->applyAfterInput(rgb, count) : relighter->apply(rgb, count); },
+        shaper, lutSize);
+    if (input)
     {
+        OCIO::GroupTransformRcPtr lattice = g;
         g = OCIO::GroupTransform::Create();
         g->appendTransform(InfinityGuard());
         g->appendTransform(MakeMatrixTransform(*input));

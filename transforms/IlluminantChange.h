@@ -149,10 +149,6 @@ public:
     /// rootpoly's fitted map (nullptr for other methods); for balanced
     /// plates it includes the balance for `to`.
     const RootPolynomial* rootPolynomial() const noexcept { return m_rootpoly.get(); }
-    /// The 3×3 a non-linear method applies to the guarded pixel before its
-    /// own work (balanced plates: the inverse balance for `from`;
-    /// rootpoly-camera: the way back to the camera's record), or nullptr.
-    const Mat3* inputMatrix() const noexcept { return m_hasPre ? &m_pre : nullptr; }
 
     /// One pixel, working RGB under `from` → as if under `to`; any input,
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
@@ -160,8 +156,12 @@ public:
     /// `count` interleaved RGB float triples in place, on `threads` threads
     /// (0: all cores), neighbours warm-starting each other's fits.
     void apply(float* rgb, size_t count, int threads = 0) const;
-    /// The same without the guard and inputMatrix(): what a LUT placed
-    /// after a guard and that matrix has to hold.
+
+    /// The 3×3 a non-linear method applies to the guarded pixel before its
+    /// own work (balanced plates: the inverse balance for `from`;
+    /// rootpoly-camera: the way back to the camera's record), or nullptr.
+    const Mat3* inputMatrix() const noexcept { return m_hasPre ? &m_pre : nullptr; }
+    /// apply() without the guard and inputMatrix().
     void applyAfterInput(float* rgb, size_t count, int threads = 0) const;
 
 private:

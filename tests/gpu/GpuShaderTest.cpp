@@ -20,6 +20,7 @@
 #include "gpu/GpuRunner.h"
 #include "luts/LutWriter.h"
 #include "plugin/ConfigBuilder.h"
+#include "spectral/CameraFile.h"
 #include "robustness/HardValues.h"
 #include "spectral/Illuminants.h"
 
@@ -625,6 +626,50 @@ TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", 
     CheckGpuMatchesCpu(cases, report);
     report.time("GPU runs", t);
     report.print("upsample config, " + std::to_string(cases.size()) + " transforms");
+}
+
+TEST_CASE("Looks for lit and balanced plates, rootpoly-camera included, compile and run on the GPU",
+          "[gpu]")
+{
+    // A camera of three Gaussian channels: rootpoly-camera's looks need one.
+    std::ostringstream csv;
+    csv << "nm,R,G,B\n";
+    for (int l = 380; l <= 780; l += 5)
+    {
+        const auto g = [&](double peak) { return std::exp(-0.5 * std::pow((l - peak) / 32.0, 2)); };
+        csv << l << "," << g(605) << "," << g(535) << "," << g(450) << "\n";
+    }
+    for (const Plates plates : {Plates{PlateConvention::LIT, AdaptationMethod::CAT02},
+                                Plates{PlateConvention::BALANCED, AdaptationMethod::BRADFORD}})
+    {
+        Report report;
+        Clock::time_point t = Clock::now();
+        ConfigOptions options;
+        options.lights = {L("A"), L("D65")};
+        options.methods = {"band3", "rootpoly", "rootpoly-camera"};
+        options.plates = plates;
+        options.camera =
+            std::make_shared<const SpectralCamera>(ReadCameraText(csv.str(), "gaussian.csv"));
+        options.lutSize = 33;
+        const TempDir dir("plates_" + plates.key());
+        WriteConfigPackage(BuildConfig(options), dir.path());
+        const OCIO::ConstConfigRcPtr config =
+            OCIO::Config::CreateFromFile((dir.path() + "/config.ocio").c_str());
+        const std::vector<Case> cases = ConfigCases(config);
+        const auto luts = std::count_if(cases.begin(), cases.end(),
+                                        [](const Case& c) { return c.kind == Kind::LUT; });
+        // rootpoly and rootpoly-camera, A→D65 and D65→A, looks and named transforms.
+        CHECK(luts == 8);
+        report.time("config", t);
+        t = Clock::now();
+        CheckShadersCompile(cases);
+        report.time("shaders", t);
+        t = Clock::now();
+        CheckGpuMatchesCpu(cases, report);
+        report.time("GPU runs", t);
+        report.print(plates.key() + " plates config, " + std::to_string(cases.size()) +
+                     " transforms");
+    }
 }
 
 TEST_CASE("LUT files bandlight writes compile and run on the GPU", "[gpu]")
