@@ -77,25 +77,45 @@ std::vector<float> RenderChart(const Spectrum& illuminant, const RgbSpace& worki
     return px;
 }
 
+/// The chart balanced to the working white: what an ACES IDT delivers.
+std::vector<float> Balanced(std::vector<float> px, const Spectrum& light, const RgbSpace& working)
+{
+    const Mat3 b = BalanceMatrix(light, working, AdaptationMethod::CAT02);
+    for (size_t i = 0; i + 3 < px.size(); i += 4)
+    {
+        const Vec3 v = b * Vec3(px[i], px[i + 1], px[i + 2]);
+        px[i] = float(v.x());
+        px[i + 1] = float(v.y());
+        px[i + 2] = float(v.z());
+    }
+    return px;
+}
+
 void RunPackage(const std::string& dir)
 {
+    // The config for white-balanced plates (the ACES convention, the
+    // default) in DIR, the one for lit plates in DIR/lit.
     ConfigOptions options;
     options.lights = LectureLights();
     options.methods = LinearMethodNames();
     const ConfigPackage package = BuildConfig(options);
-    // The config, its LUTs and every image are one set: a failing run
+    ConfigOptions litOptions = options;
+    litOptions.plates = Plates{PlateConvention::LIT, AdaptationMethod::CAT02};
+    const ConfigPackage litPackage = BuildConfig(litOptions);
+    // The configs, their LUTs and every image are one set: a failing run
     // leaves the previous package as it was.
     OutputSet files;
     WriteConfigPackage(package, dir, &files);
-    const OCIO::ConstConfigRcPtr config = package.config;
+    WriteConfigPackage(litPackage, dir + "/lit", &files);
     const RgbSpace& working = FindRgbSpace(options.workingSpace);
     const std::string workingName = ColorSpaceName(working);
 
     int w = 0, h = 0;
-    const std::vector<float> underA = RenderChart(BuiltinIlluminant("A"), working, w, h);
-    const std::vector<float> underD65 = RenderChart(BuiltinIlluminant("D65"), working, w, h);
+    const Spectrum a = BuiltinIlluminant("A"), d65 = BuiltinIlluminant("D65");
+    const std::vector<float> underA = RenderChart(a, working, w, h);
+    const std::vector<float> underD65 = RenderChart(d65, working, w, h);
     const OCIO::ConstCPUProcessorRcPtr toSrgb =
-        config->getProcessor(workingName.c_str(), "sRGB")->getDefaultCPUProcessor();
+        package.config->getProcessor(workingName.c_str(), "sRGB")->getDefaultCPUProcessor();
     const int rgb[3] = {0, 1, 2};
 
     struct Output
@@ -103,23 +123,33 @@ void RunPackage(const std::string& dir)
         std::string name;
         std::vector<float> pixels;
     };
-    std::vector<Output> outputs = {{"chart_A", underA}, {"chart_D65_spectral", underD65}};
-    for (const char* method : {"band3", "bradford"})
+    std::vector<Output> outputs = {{"chart_A", underA},
+                                   {"chart_D65_spectral", underD65},
+                                   {"chart_A_balanced", Balanced(underA, a, working)},
+                                   {"chart_D65_spectral_balanced", Balanced(underD65, d65, working)}};
+    for (const bool balanced : {false, true})
     {
-        const std::string look = LookName(method, "A", "D65");
-        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
-        t->setSrc(workingName.c_str());
-        t->setDst(workingName.c_str());
-        t->setLooks(look.c_str());
-        std::vector<float> px = underA;
-        ApplyToBuffer(config->getProcessor(t)->getDefaultCPUProcessor(), px.data(), w, h, 4, rgb,
-                      0);
-        outputs.push_back({"chart_" + look, std::move(px)});
+        const OCIO::ConstConfigRcPtr config = balanced ? package.config : litPackage.config;
+        for (const char* method : {"band3", "bradford"})
+        {
+            const std::string look = LookName(method, "A", "D65");
+            OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+            t->setSrc(workingName.c_str());
+            t->setDst(workingName.c_str());
+            t->setLooks(look.c_str());
+            std::vector<float> px = outputs[balanced ? 2 : 0].pixels;
+            ApplyToBuffer(config->getProcessor(t)->getDefaultCPUProcessor(), px.data(), w, h, 4,
+                          rgb, 0);
+            outputs.push_back({"chart_" + look + (balanced ? "_balanced" : ""), std::move(px)});
+        }
     }
     std::ostringstream report;
-    report << "Wrote " << dir << "/config.ocio: " << config->getNumLooks() << " looks ("
+    report << "Wrote " << dir << "/config.ocio: " << package.config->getNumLooks() << " looks ("
            << options.lights.size() << " illuminants, " << options.methods.size()
-           << " methods), working space " << workingName << "\n";
+           << " methods) for white-balanced plates (the ACES convention), working space "
+           << workingName << "\n"
+           << "Wrote " << dir << "/lit/config.ocio: the same looks for lit plates (images that "
+              "carry the light's cast)\n";
     ImageDescription srgb;
     srgb.colorSpace = "sRGB";
     for (const Output& o : outputs)
@@ -135,8 +165,10 @@ void RunPackage(const std::string& dir)
     }
     files.commit();
     std::cout << report.str();
-    std::cout << "The TCS01-TCS15 chart rendered spectrally under A, re-lit to D65 by the band3 "
-                 "and bradford looks, and the spectral truth under D65 to compare with.\n";
+    std::cout << "The TCS01-TCS15 chart rendered spectrally under A, as shot (lit: orange) and "
+                 "white-balanced (as an ACES IDT delivers it), re-lit to D65 by the band3 and "
+                 "bradford looks of the config for each, and the spectral truth under D65 to "
+                 "compare with.\n";
 }
 
 }  // namespace
@@ -147,7 +179,8 @@ void AddPackageCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "package",
         "Write the default OCIO config package (ACEScg, A/C/D65/F2/F11, every linear "
-        "method) and an example chart re-lit from A to D65");
+        "method; for white-balanced plates, and in lit/ for lit ones) and an example chart "
+        "re-lit from A to D65");
     cmd->add_option("--out", *dir, "Directory to write into")->capture_default_str();
     cmd->callback([dir] { RunPackage(*dir); });
 }
