@@ -212,6 +212,7 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
         }
     }
     cam.name = name.empty() ? source : OneLine(name, 120);
+    cam.source = source;
     return Finish(std::move(cam), source);
 }
 
@@ -248,6 +249,7 @@ CameraSensitivities ReadCameraText(const std::string& text, const std::string& s
     }
     CameraSensitivities cam;
     cam.name = source;
+    cam.source = source;
     cam.red = spectra[size_t(index[0])].spectrum;
     cam.green = spectra[size_t(index[1])].spectrum;
     cam.blue = spectra[size_t(index[2])].spectrum;
@@ -266,6 +268,7 @@ CameraSensitivities ObserverCamera(Observer observer)
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
     CameraSensitivities cam;
     cam.name = observer == Observer::CIE1964_10DEG ? "CIE 1964 10° observer" : "CIE 1931 2° observer";
+    cam.source = cam.name;
     cam.red = cmf.x;
     cam.green = cmf.y;
     cam.blue = cmf.z;

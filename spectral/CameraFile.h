@@ -14,7 +14,8 @@ namespace bandlight
 /// removes it). Outside a channel's grid the response is taken as zero.
 struct CameraSensitivities
 {
-    std::string name;
+    std::string name;    ///< "manufacturer model" from a JSON header, else the source
+    std::string source;  ///< the file it was read from, for messages
     Spectrum red;
     Spectrum green;
     Spectrum blue;

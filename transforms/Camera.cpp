@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "transforms/Camera.h"
 
+#include <cmath>
+
 #include <Eigen/LU>
 
 #include "spectral/CieData.h"
@@ -11,7 +13,8 @@
 namespace bandlight
 {
 
-SpectralCamera::SpectralCamera(const CameraSensitivities& s) : m_name(s.name)
+SpectralCamera::SpectralCamera(const CameraSensitivities& s)
+    : m_name(s.name), m_source(s.source.empty() ? s.name : s.source)
 {
     for (int c = 0; c < 3; ++c)
     {
@@ -23,6 +26,19 @@ SpectralCamera::SpectralCamera(const CameraSensitivities& s) : m_name(s.name)
             m_s(c, i) = (l < ch.start() - 1e-9 || l > ch.end() + 1e-9) ? 0.0 : ch(l);
         }
     }
+    const double peak = m_s.cwiseAbs().maxCoeff();
+    if (!(peak > 0.0) || !std::isfinite(peak))
+    {
+        throw Exception(label() + ": no finite response over 380-780 nm");
+    }
+    int exponent = 0;
+    std::frexp(peak, &exponent);
+    m_s = m_s.unaryExpr([exponent](double v) { return std::ldexp(v, -exponent); });
+}
+
+std::string SpectralCamera::label() const
+{
+    return m_source == m_name ? m_source + ": camera" : m_source + ": camera " + m_name;
 }
 
 CameraShot::CameraShot(const SpectralCamera& camera, const Spectrum& light)
@@ -38,7 +54,7 @@ CameraShot::CameraShot(const SpectralCamera& camera, const Spectrum& light)
     {
         if (!(white[c] > 0.0) || !std::isfinite(white[c]))
         {
-            throw Exception("camera " + camera.name() + ": its " +
+            throw Exception(camera.label() + ": its " +
                             (c == 0 ? "red" : c == 1 ? "green" : "blue") +
                             " channel records nothing under this light: no white balance exists");
         }
@@ -65,10 +81,18 @@ Mat3 FitIdt(const SpectralCamera& camera, const Spectrum& light, const RgbSpace&
     fit.whiteOut = Vec3::Ones();
     fit.rgbToXyz = eye.rgbToXyz();
     fit.labWhite = WorkingWhiteXyz(working);
-    const Mat3 idt = FitLabMatrix(fit);
+    Mat3 idt = Mat3::Zero();
+    try
+    {
+        idt = FitLabMatrix(fit);
+    }
+    catch (const Exception&)
+    {
+        idt = Mat3::Zero();  // refused below, naming the camera
+    }
     if (!idt.allFinite() || std::abs(idt.determinant()) < 1e-12)
     {
-        throw Exception("camera " + camera.name() +
+        throw Exception(camera.label() +
                         ": its channels do not separate colours (the fitted input transform is "
                         "singular)");
     }

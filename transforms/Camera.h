@@ -14,7 +14,9 @@ namespace bandlight
 {
 
 /// A camera as the pipeline sees it: its sensitivities on SurfaceRenderer's
-/// grid (380–780 nm at 5 nm; zero where the file has no data).
+/// grid (380–780 nm at 5 nm; zero where the file has no data), scaled by a
+/// power of two so that the largest is in [0.5, 1) (white balance removes
+/// any common scale; this keeps 1e300 and 1e-300 files finite).
 class SpectralCamera
 {
 public:
@@ -23,10 +25,13 @@ public:
     explicit SpectralCamera(const CameraSensitivities& sensitivities);
 
     const std::string& name() const noexcept { return m_name; }
+    /// "SOURCE: camera NAME": how messages about this camera begin.
+    std::string label() const;
     const Matrix& sensitivities() const noexcept { return m_s; }
 
 private:
     std::string m_name;
+    std::string m_source;
     Matrix m_s;
 };
 

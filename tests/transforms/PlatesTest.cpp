@@ -356,7 +356,7 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
     red[80] = 1.0;
     CHECK_NOTHROW(CameraShot(blue, BuiltinIlluminant("D65")));
     CHECK_THROWS_WITH(CameraShot(blue, Spectrum(380.0, 5.0, red)),
-                      Contains("blue channel records nothing under this light"));
+                      Contains("ir.csv: camera: its blue channel records nothing under this light"));
 }
 
 TEST_CASE("rootpoly-camera needs a camera", "[transforms][camera]")
