@@ -90,6 +90,11 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
         throw Exception(source + ":" + std::to_string(LineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
                         ": not valid JSON: " + OneLine(e.what(), 200));
     }
+    catch (const nlohmann::json::exception& e)
+    {
+        // A number beyond double's range ("1e400") is out_of_range, not a parse error.
+        throw Exception(source + ": not a camera file: " + OneLine(e.what(), 200));
+    }
     const auto need = [&](const nlohmann::json& parent, const char* key,
                           const std::string& path) -> const nlohmann::json&
     {
