@@ -119,10 +119,15 @@ BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Use
 
 /// A method applied natively (Relighter: the guard, then the method) to a
 /// packed 1920×1080 RGB float buffer, on state.range(0) threads.
-static void ApplyNative(benchmark::State& state, const char* method)
+static void ApplyNative(benchmark::State& state, const char* method, bool balanced = false)
 {
-    const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                      ParseMethod(method), FindRgbSpace("acescg"));
+    MethodSpec spec = ParseMethod(method);
+    if (balanced)
+    {
+        spec.plates = ParsePlates("balanced", "cat02");
+    }
+    const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}, spec,
+                      FindRgbSpace("acescg"));
     std::vector<float> px(size_t(1920) * 1080 * 3);
     for (size_t i = 0; i < px.size(); ++i)
     {
@@ -143,6 +148,18 @@ static void BM_NativeRootPoly(benchmark::State& state)
     ApplyNative(state, "rootpoly");
 }
 BENCHMARK(BM_NativeRootPoly)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The same for white-balanced plates: the inverse balance (one more 3×3)
+/// in front; the balance for the target is folded into the polynomial.
+static void BM_NativeRootPolyBalanced(benchmark::State& state)
+{
+    ApplyNative(state, "rootpoly", true);
+}
+BENCHMARK(BM_NativeRootPolyBalanced)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 /// The band3 3×3 through the same native path, in the same run.
 static void BM_NativeMatrixRgb(benchmark::State& state)

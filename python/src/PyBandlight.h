@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// The Python module's shared pieces: one Add<Area>() per Py<Area>.cpp (as
+// PyOpenColorIO's bindings are organised), argument conversion that reads
+// and refuses input exactly as the `bandlight` command does, numpy helpers,
+// and the file-error boundary that makes OSError of what is an I/O failure.
+
+#include <cerrno>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "cli/Common.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/BandModel.h"
+#include "transforms/BandSet.h"
+#include "transforms/IlluminantChange.h"
+
+namespace bandlight::python
+{
+namespace py = pybind11;
+using Path = std::filesystem::path;
+
+// ---------------------------------------------------------------------------
+// One registration per area (PyOpenColorIO's layout: one Py<Area>.cpp each).
+void AddErrors(py::module_& m);
+void AddSpectrum(py::module_& m);
+void AddColorimetry(py::module_& m);
+void AddBands(py::module_& m);
+void AddTransforms(py::module_& m);
+void AddConfig(py::module_& m);
+void AddAccuracy(py::module_& m);
+void AddRender(py::module_& m);
+
+// ---------------------------------------------------------------------------
+// Errors (PyBandlight.cpp).
+
+/// An input or output file that could not be used: Python gets an OSError
+/// (FileNotFoundError, PermissionError, IsADirectoryError, ... by `error`)
+/// whose text is the library's message, the line `bandlight` prints.
+class FileError : public Exception
+{
+public:
+    FileError(const std::string& what, int error) : Exception(what), m_error(error) {}
+    int error() const noexcept { return m_error; }
+
+private:
+    int m_error;
+};
+
+/// 0 when `path` opens for reading as a regular file, else the errno that
+/// says why not (ENOENT, EACCES, EISDIR, ...).
+int InputFileProblem(const std::string& path);
+
+/// 0 when the file `path` can be created (its folder exists and is
+/// writable) or, with `folder`, the folder `path` can be made or filled;
+/// else the errno that says why not.
+int OutputFileProblem(const std::string& path, bool folder);
+
+/// True for the library's own messages about output files it could not
+/// create, write or rename (spectral/AtomicFile.cpp, WriteConfigPackage).
+bool IsOutputFailure(const std::string& message);
+
+/// Runs `fn`, which reads `path`; an Exception it throws becomes a
+/// FileError (OSError) when the file cannot be read at all, and stays an
+/// Exception (ValueError) when the file was read and its content refused.
+template <typename Fn>
+auto ReadingFile(const std::string& path, Fn&& fn) -> decltype(fn())
+{
+    try
+    {
+        return fn();
+    }
+    catch (const FileError&)
+    {
+        throw;
+    }
+    catch (const Exception& e)
+    {
+        if (const int error = InputFileProblem(path))
+        {
+            throw FileError(e.what(), error);
+        }
+        throw;
+    }
+}
+
+/// Runs `fn`, which writes the file `path` (or, with `folder`, fills the
+/// folder `path`, as WriteConfigPackage does); a failure to create or write
+/// it becomes a FileError, any other refusal stays an Exception.
+template <typename Fn>
+auto WritingFile(const std::string& path, bool folder, Fn&& fn) -> decltype(fn())
+{
+    try
+    {
+        return fn();
+    }
+    catch (const FileError&)
+    {
+        throw;
+    }
+    catch (const Exception& e)
+    {
+        if (const int error = OutputFileProblem(path, folder))
+        {
+            throw FileError(e.what(), error);
+        }
+        if (IsOutputFailure(e.what()))
+        {
+            throw FileError(e.what(), EIO);
+        }
+        throw;
+    }
+}
+
+/// Issues a bandlight.NoteWarning (what `bandlight` prints as "note: ...").
+void Warn(const std::string& note);
+
+// ---------------------------------------------------------------------------
+// Arguments (PyArgs.cpp). Strings are read as the command reads its options.
+
+/// A light: a str is a built-in illuminant name or a spectrum file, as
+/// `--illuminant`, `--from` and `--to` take it (the file's first spectrum);
+/// an os.PathLike is a spectrum file; a Spectrum is used as given. Either
+/// is checked and scaled by UsableIlluminant.
+Light ToLight(const py::handle& arg);
+
+/// Lights: a sequence of lights, or a comma-separated str as `--illuminants`.
+std::vector<Light> ToLights(const py::handle& arg);
+
+/// Remittances: a str is a test colour (TCS01–TCS15, TCS for all) or a file
+/// as `--reflectance` takes it; an os.PathLike a file; a Spectrum or a
+/// sequence of them as given (magnitude-checked like a file's).
+std::vector<NamedSpectrum> ToReflectances(const py::handle& arg);
+
+/// True when `arg` names one remittance (a Spectrum), not a set of them.
+bool IsSingleSpectrum(const py::handle& arg);
+
+/// "1931"/"1964" (or 1931, 1964, 2, 10).
+Observer ToObserver(const py::handle& arg);
+
+/// plates=, adaptation=, camera=, camera_idt=: what the images are and the
+/// camera that shot them, as the command's --plates, --adaptation,
+/// --camera, --camera-idt (default: white-balanced by CAT02, no camera).
+struct PlatesArgs
+{
+    std::string plates = "balanced";
+    std::string adaptation = "cat02";
+    py::object camera = py::none();  ///< None, a file (str or os.PathLike)
+    std::string cameraIdt = "D55";
+
+    /// The command's options for these arguments (the camera file's path).
+    cli::PlatesOptions options() const;
+    /// The camera read (nullptr for None); unreadable files raise OSError.
+    std::shared_ptr<const SpectralCamera> loadCamera() const;
+};
+
+/// A method by name, with fit3x3's / rootpoly's training remittances
+/// (None: their defaults) and the plates it is for.
+MethodSpec ToMethod(const std::string& name, const py::handle& training,
+                    const PlatesArgs& plates);
+
+/// The bands argument: None is the lecture's VB/VG/VR; a BandSet, a str of
+/// edges ("400,500,600,700", parsed as --bands is) or a sequence of edges.
+BandSet ToBands(const py::handle& arg);
+
+/// "xyz" or "ebu_rgb" (also "ebu-rgb", "rgb").
+MatchingSet ToMatchingSet(const std::string& text);
+
+/// The thread count argument: 0 (all cores) to 256.
+int ToThreads(int threads);
+
+/// `arg` as a T, or a TypeError saying that `what` must be `expected`.
+template <typename T>
+T CastTo(const py::handle& arg, const std::string& what, const std::string& expected)
+{
+    try
+    {
+        return arg.cast<T>();
+    }
+    catch (const py::cast_error&)
+    {
+        throw py::type_error(
+            what + " must be " + expected + ", not " +
+            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+    }
+}
+
+// ---------------------------------------------------------------------------
+// numpy (PyArgs.cpp).
+
+py::array_t<double> ToArray(const Vec3& v);
+py::array_t<double> ToArray(const Eigen::MatrixXd& m);
+py::array_t<double> ToArray(const std::vector<double>& v);
+/// A (3, 3) array_like as a matrix; throws Exception naming `what` otherwise.
+Mat3 ToMat3(const py::handle& arg, const std::string& what);
+/// A (3,) array_like; throws Exception naming `what` otherwise.
+Vec3 ToVec3(const py::handle& arg, const std::string& what);
+
+/// An array_like of colours (..., 3) as a C-contiguous float64 array, and
+/// the shape of its colours (the leading dimensions).
+struct Colours
+{
+    py::array_t<double, py::array::c_style> data;
+    std::vector<py::ssize_t> shape;  ///< without the trailing 3
+    size_t count = 0;
+    const double* at(size_t i) const { return data.data() + 3 * i; }
+};
+Colours ToColours(const py::handle& arg, const std::string& what);
+
+/// numpy.broadcast_arrays of two colour arrays (..., 3), each as Colours of
+/// the common shape.
+std::pair<Colours, Colours> BroadcastColours(const py::handle& a, const py::handle& b,
+                                             const std::string& whatA, const std::string& whatB);
+
+/// An empty array of `shape` + `trailing` (trailing 0: none), float64.
+py::array_t<double> NewArray(std::vector<py::ssize_t> shape, py::ssize_t trailing);
+
+/// A float result for a single colour (shape ()), else the array.
+py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& shape);
+
+}  // namespace bandlight::python
