@@ -313,13 +313,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                         };
                         const auto exact = [](const std::shared_ptr<Relighter>& r) -> Batch
                         {
-                            return [r](std::vector<Vec3>& px)
-                            {
-                                for (Vec3& p : px)
-                                {
-                                    p = r->apply(p);
-                                }
-                            };
+                            return [r](std::vector<Vec3>& px) { r->apply(px.data(), px.size()); };
                         };
                         const auto asFloat = [](const PixelBatch& f) -> Batch
                         {
@@ -363,21 +357,23 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                             }
                             for (const Form& form : forms)
                             {
-                                std::vector<Vec3> px(n * o.exposures.size());
-                                for (size_t e = 0; e < o.exposures.size(); ++e)
+                                // Colour-major: a colour's exposures side by side.
+                                const size_t ne = o.exposures.size();
+                                std::vector<Vec3> px(n * ne);
+                                for (size_t i = 0; i < n; ++i)
                                 {
-                                    for (size_t i = 0; i < n; ++i)
+                                    for (size_t e = 0; e < ne; ++e)
                                     {
-                                        px[e * n + i] = o.exposures[e] * source.plate[s][i];
+                                        px[i * ne + e] = o.exposures[e] * source.plate[s][i];
                                     }
                                 }
                                 form.apply(px);
-                                for (size_t e = 0; e < o.exposures.size(); ++e)
+                                for (size_t e = 0; e < ne; ++e)
                                 {
                                     std::vector<Vec3> predicted(n);
                                     for (size_t i = 0; i < n; ++i)
                                     {
-                                        predicted[i] = px[e * n + i] / o.exposures[e];
+                                        predicted[i] = px[i * ne + e] / o.exposures[e];
                                     }
                                     rows.push_back(MakeRow(
                                         method.name, from, to, o.sets[s].name, o.exposures[e],

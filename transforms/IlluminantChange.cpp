@@ -498,6 +498,29 @@ Vec3 Relighter::apply(const Vec3& rgb) const
     return core(m_hasPre ? Vec3(m_pre * in) : in);
 }
 
+void Relighter::apply(Vec3* rgb, size_t count) const
+{
+    if (!m_spectral)
+    {
+        for (size_t i = 0; i < count; ++i)
+        {
+            rgb[i] = apply(rgb[i]);
+        }
+        return;
+    }
+    // No warm start between pixels: each fit starts alike, so a colour's
+    // result does not depend on its neighbours.
+    UpsampleCache cache;
+    for (size_t i = 0; i < count; ++i)
+    {
+        const Vec3 guarded = GuardPixel(rgb[i]);
+        const Vec3 in = m_hasPre ? Vec3(m_pre * guarded) : guarded;
+        const Vec3 out =
+            UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in, nullptr, &cache);
+        rgb[i] = m_hasPost ? Vec3(m_post * out) : out;
+    }
+}
+
 void Relighter::apply(float* rgb, size_t count, int threads) const
 {
     if (!m_hasPre && !m_rootpoly && m_linear)

@@ -157,6 +157,11 @@ public:
     /// (0: all cores), neighbours warm-starting each other's fits.
     void apply(float* rgb, size_t count, int threads = 0) const;
 
+    /// `count` pixels in double precision, in place: apply(Vec3) for each,
+    /// except that upsample shares one fit among the pixels of one
+    /// chromaticity (all exposures of a colour), as the float path does.
+    void apply(Vec3* rgb, size_t count) const;
+
     /// The 3×3 a non-linear method applies to the guarded pixel before its
     /// own work (balanced plates: the inverse balance for `from`;
     /// rootpoly-camera: the way back to the camera's record), or nullptr.
