@@ -155,11 +155,7 @@ static void BM_NativeRootPolyBalanced(benchmark::State& state)
 {
     ApplyNative(state, "rootpoly", true);
 }
-BENCHMARK(BM_NativeRootPolyBalanced)
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_NativeRootPolyBalanced)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The band3 3×3 through the same native path, in the same run.
 static void BM_NativeMatrixRgb(benchmark::State& state)

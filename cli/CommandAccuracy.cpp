@@ -70,9 +70,8 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
     int n = 0;
     for (const AccuracyRow& r : rows)
     {
-        if (r.method != method || r.set != set || r.shipped != f.shipped ||
-            r.plates != f.plates || r.source != f.source ||
-            (f.exposure > 0.0 && r.exposure != f.exposure))
+        if (r.method != method || r.set != set || r.shipped != f.shipped || r.plates != f.plates ||
+            r.source != f.source || (f.exposure > 0.0 && r.exposure != f.exposure))
         {
             continue;
         }
@@ -364,8 +363,8 @@ void RunAccuracy(const AccuracyCommandOptions& o)
                 const Summary ideal = Summarise(rows, m, set.name, idealF);
                 const Summary shipped = Summarise(rows, m, set.name, shippedF);
                 const auto worst = WorstExposure(rows, m, set.name, shippedF, options.exposures);
-                const auto lecture = WorstExposure(rows, m, set.name, shippedF, options.exposures,
-                                                   lecturePairs);
+                const auto lecture =
+                    WorstExposure(rows, m, set.name, shippedF, options.exposures, lecturePairs);
                 const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped, key, "cie"});
                 if (set.name == heldOut && &plates == &options.plates.front())
                 {
@@ -442,8 +441,8 @@ void RunAccuracy(const AccuracyCommandOptions& o)
                        "against 5-fold cross-validated\n";
                 anyCv = true;
             }
-            const Summary inL = Summarise(cvRows, m, "training, in-sample", {1.0, false, key},
-                                          lecturePairs);
+            const Summary inL =
+                Summarise(cvRows, m, "training, in-sample", {1.0, false, key}, lecturePairs);
             const Summary cvL =
                 Summarise(cvRows, m, "training, 5-fold", {1.0, false, key}, lecturePairs);
             char line[200];
@@ -476,29 +475,28 @@ void RunAccuracy(const AccuracyCommandOptions& o)
                     const auto at = [&](const std::string& source, bool lecture)
                     {
                         return Summarise(rows, m, set.name, {1.0, false, key, source},
-                                         lecture ? lecturePairs
-                                                 : std::vector<std::pair<std::string, std::string>>{})
+                                         lecture
+                                             ? lecturePairs
+                                             : std::vector<std::pair<std::string, std::string>>{})
                             .mean;
                     };
                     char line[240];
                     if (cameraMethod)
                     {
-                        std::snprintf(line, sizeof line,
-                                      "  %-16s %18s %18s %18s %8.2f (%6.2f)\n", m.c_str(), "-",
-                                      "-", "-", at("camera-daylight-idt", false),
+                        std::snprintf(line, sizeof line, "  %-16s %18s %18s %18s %8.2f (%6.2f)\n",
+                                      m.c_str(), "-", "-", "-", at("camera-daylight-idt", false),
                                       at("camera-daylight-idt", true));
                     }
                     else
                     {
-                        std::snprintf(line, sizeof line,
-                                      "  %-16s %8.2f (%6.2f) %8.2f (%6.2f) %+8.2f (%+6.2f) "
-                                      "%8.2f (%6.2f)\n",
-                                      m.c_str(), at("cie", false), at("cie", true),
-                                      at("camera", false), at("camera", true),
-                                      at("camera", false) - at("cie", false),
-                                      at("camera", true) - at("cie", true),
-                                      at("camera-daylight-idt", false),
-                                      at("camera-daylight-idt", true));
+                        std::snprintf(
+                            line, sizeof line,
+                            "  %-16s %8.2f (%6.2f) %8.2f (%6.2f) %+8.2f (%+6.2f) "
+                            "%8.2f (%6.2f)\n",
+                            m.c_str(), at("cie", false), at("cie", true), at("camera", false),
+                            at("camera", true), at("camera", false) - at("cie", false),
+                            at("camera", true) - at("cie", true), at("camera-daylight-idt", false),
+                            at("camera-daylight-idt", true));
                     }
                     out << line;
                 }

@@ -74,7 +74,8 @@ void RunApply(const ApplyOptions& o)
             throw Exception("give --look NAME --config DIR, or --from S1 --to S2 [--method M]");
         }
         const MethodSpec method = o.relight.methodSpec();
-        if (method.method == ChangeMethod::ROOTPOLY || method.method == ChangeMethod::ROOTPOLY_CAMERA)
+        if (method.method == ChangeMethod::ROOTPOLY ||
+            method.method == ChangeMethod::ROOTPOLY_CAMERA)
         {
             const NamedSpectrum from = ResolveIlluminant(o.relight.from);
             const NamedSpectrum to = ResolveIlluminant(o.relight.to);

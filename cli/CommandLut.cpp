@@ -50,10 +50,10 @@ void RunLut(const LutCommandOptions& o, bool sizeGiven)
         {
             options.shaper = ShaperSpec::ForNonLinear();
         }
-        options.description = "Relight from " + from.name + " to " + to.name + " in " +
-                              FindRgbSpace(o.relight.workingSpace).displayName + ". " +
-                              DescribeMethod(method) + " " +
-                              method.plates.describe(FindRgbSpace(o.relight.workingSpace).displayName);
+        options.description =
+            "Relight from " + from.name + " to " + to.name + " in " +
+            FindRgbSpace(o.relight.workingSpace).displayName + ". " + DescribeMethod(method) + " " +
+            method.plates.describe(FindRgbSpace(o.relight.workingSpace).displayName);
         files = WriteLut([relighter](float* rgb, size_t n) { relighter->apply(rgb, n); }, options,
                          o.out);
     }

@@ -123,10 +123,11 @@ void RunPackage(const std::string& dir)
         std::string name;
         std::vector<float> pixels;
     };
-    std::vector<Output> outputs = {{"chart_A", underA},
-                                   {"chart_D65_spectral", underD65},
-                                   {"chart_A_balanced", Balanced(underA, a, working)},
-                                   {"chart_D65_spectral_balanced", Balanced(underD65, d65, working)}};
+    std::vector<Output> outputs = {
+        {"chart_A", underA},
+        {"chart_D65_spectral", underD65},
+        {"chart_A_balanced", Balanced(underA, a, working)},
+        {"chart_D65_spectral_balanced", Balanced(underD65, d65, working)}};
     for (const bool balanced : {false, true})
     {
         const OCIO::ConstConfigRcPtr config = balanced ? package.config : litPackage.config;
@@ -148,7 +149,8 @@ void RunPackage(const std::string& dir)
            << options.lights.size() << " illuminants, " << options.methods.size()
            << " methods) for white-balanced plates (the ACES convention), working space "
            << workingName << "\n"
-           << "Wrote " << dir << "/lit/config.ocio: the same looks for lit plates (images that "
+           << "Wrote " << dir
+           << "/lit/config.ocio: the same looks for lit plates (images that "
               "carry the light's cast)\n";
     ImageDescription srgb;
     srgb.colorSpace = "sRGB";

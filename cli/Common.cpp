@@ -186,9 +186,10 @@ void AddPlatesOptions(CLI::App& app, PlatesOptions& o, bool allowBoth)
                    "Chromatic adaptation the balanced plates were balanced with: cat02 "
                    "(rawtoaces) or bradford")
         ->capture_default_str();
-    app.add_option("--camera", o.camera,
-                   "SpectralCamera spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
-                   "columns): enables rootpoly-camera, and accuracy simulates that camera's plates");
+    app.add_option(
+        "--camera", o.camera,
+        "SpectralCamera spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
+        "columns): enables rootpoly-camera, and accuracy simulates that camera's plates");
     app.add_option("--camera-idt", o.idtLight,
                    "The light the camera's one fixed IDT was fitted for (rootpoly-camera's "
                    "plates: that IDT plus white-balance gains)")
@@ -209,7 +210,8 @@ std::shared_ptr<const SpectralCamera> PlatesOptions::loadCamera() const
     return std::make_shared<const SpectralCamera>(ReadCameraFile(camera));
 }
 
-MethodSpec PlatesOptions::apply(MethodSpec method, const std::shared_ptr<const SpectralCamera>& cam) const
+MethodSpec PlatesOptions::apply(MethodSpec method,
+                                const std::shared_ptr<const SpectralCamera>& cam) const
 {
     method.plates = parsed();
     method.camera = cam;

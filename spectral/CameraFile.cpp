@@ -58,8 +58,8 @@ void CheckChannel(const Spectrum& s, const std::string& what, const std::string&
         }
         if (s[i] < -0.01 * peak)
         {
-            throw Exception(source + ": the " + what + " channel responds " + Num(s[i]) +
-                            " at " + std::to_string(int(std::lround(l))) +
+            throw Exception(source + ": the " + what + " channel responds " + Num(s[i]) + " at " +
+                            std::to_string(int(std::lround(l))) +
                             " nm: a sensitivity is not negative beyond noise (1 % of its peak)");
         }
     }
@@ -100,18 +100,20 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
     {
         if (!parent.is_object() || !parent.contains(key))
         {
-            throw Exception(source + ": no \"" + path + "\" in this camera file (rawtoaces JSON: "
+            throw Exception(source + ": no \"" + path +
+                            "\" in this camera file (rawtoaces JSON: "
                             "spectral_data.data.main maps wavelengths to [R, G, B])");
         }
         return parent.at(key);
     };
     const nlohmann::json& sd = need(j, "spectral_data", "spectral_data");
-    const nlohmann::json& main = need(need(sd, "data", "spectral_data.data"), "main",
-                                      "spectral_data.data.main");
+    const nlohmann::json& main =
+        need(need(sd, "data", "spectral_data.data"), "main", "spectral_data.data.main");
     if (!main.is_object() || main.size() < 2)
     {
-        throw Exception(source + ": spectral_data.data.main must map at least two wavelengths to "
-                                 "[R, G, B]");
+        throw Exception(source +
+                        ": spectral_data.data.main must map at least two wavelengths to "
+                        "[R, G, B]");
     }
     if (main.size() > MAX_SPECTRUM_SAMPLES)
     {
@@ -125,8 +127,9 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
         const nlohmann::json& idx = sd.at("index").at("main");
         if (!idx.is_array() || idx.size() != 3)
         {
-            throw Exception(source + ": spectral_data.index.main must name three channels, R, G "
-                                     "and B");
+            throw Exception(source +
+                            ": spectral_data.index.main must name three channels, R, G "
+                            "and B");
         }
         bool seen[3] = {false, false, false};
         for (int k = 0; k < 3; ++k)
@@ -134,11 +137,15 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
             const std::string n = idx.at(size_t(k)).is_string()
                                       ? Lower(idx.at(size_t(k)).get<std::string>())
                                       : std::string();
-            const int c = n == "r" || n == "red" ? 0 : n == "g" || n == "green" ? 1 : n == "b" || n == "blue" ? 2 : -1;
+            const int c = n == "r" || n == "red"     ? 0
+                          : n == "g" || n == "green" ? 1
+                          : n == "b" || n == "blue"  ? 2
+                                                     : -1;
             if (c < 0 || seen[c])
             {
-                throw Exception(source + ": spectral_data.index.main must name R, G and B once "
-                                         "each, got " +
+                throw Exception(source +
+                                ": spectral_data.index.main must name R, G and B once "
+                                "each, got " +
                                 OneLine(idx.dump(), 200));
             }
             seen[c] = true;
@@ -149,10 +156,9 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
     for (auto it = main.begin(); it != main.end(); ++it)
     {
         const std::string& key = it.key();
-        const auto bad = [&](const std::string& why)
-        {
-            throw Exception(source + ": spectral_data.data.main \"" + OneLine(key, 60) + "\": " +
-                            why);
+        const auto bad = [&](const std::string& why) {
+            throw Exception(source + ": spectral_data.data.main \"" + OneLine(key, 60) +
+                            "\": " + why);
         };
         char* end = nullptr;
         const double wl = std::strtod(key.c_str(), &end);
@@ -188,8 +194,7 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
         if (!(d > 0.0) || std::fabs(d - step) > 1e-6 * std::max(1.0, step))
         {
             throw Exception(source + ": wavelengths " + Num(rows[i - 1].first) + " and " +
-                            Num(rows[i].first) +
-                            " break the regular grid (step " + Num(step) +
+                            Num(rows[i].first) + " break the regular grid (step " + Num(step) +
                             " nm): camera files must be sampled on a regular grid");
         }
     }
@@ -240,7 +245,10 @@ CameraSensitivities ReadCameraText(const std::string& text, const std::string& s
     for (int k = 0; k < 3; ++k)
     {
         const std::string n = Lower(spectra[size_t(k)].name);
-        const int c = n == "r" || n == "red" ? 0 : n == "g" || n == "green" ? 1 : n == "b" || n == "blue" ? 2 : -1;
+        const int c = n == "r" || n == "red"     ? 0
+                      : n == "g" || n == "green" ? 1
+                      : n == "b" || n == "blue"  ? 2
+                                                 : -1;
         if (c >= 0 && index[c] < 0)
         {
             index[c] = k;
@@ -272,7 +280,8 @@ CameraSensitivities ObserverCamera(Observer observer)
 {
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
     CameraSensitivities cam;
-    cam.name = observer == Observer::CIE1964_10DEG ? "CIE 1964 10° observer" : "CIE 1931 2° observer";
+    cam.name =
+        observer == Observer::CIE1964_10DEG ? "CIE 1964 10° observer" : "CIE 1931 2° observer";
     cam.source = cam.name;
     cam.red = cmf.x;
     cam.green = cmf.y;

@@ -213,7 +213,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
             samples[s].push_back(SurfaceRenderer::Sample(r.spectrum));
         }
     }
-    const Spectrum daylight = !o.camera ? Spectrum()
+    const Spectrum daylight = !o.camera            ? Spectrum()
                               : o.idtLight.empty() ? BuiltinIlluminant(o.idtLightName)
                                                    : o.idtLight;
     return ForEachPair(
@@ -246,10 +246,10 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                     // The camera's plates are balanced by their IDT; lit
                     // plates are those with the cast put back.
                     const CameraShot shot(*o.camera, from.spectrum);
-                    const Mat3 toPlate = pp.balanceFrom *
-                                         BalanceMatrix(from.spectrum, working, plates.adaptation,
-                                                       o.observer)
-                                             .inverse();
+                    const Mat3 toPlate =
+                        pp.balanceFrom *
+                        BalanceMatrix(from.spectrum, working, plates.adaptation, o.observer)
+                            .inverse();
                     const Mat3 idts[2] = {
                         FitIdt(*o.camera, from.spectrum, working, plates.adaptation, o.observer),
                         FitIdt(*o.camera, daylight, working, plates.adaptation, o.observer)};
@@ -312,9 +312,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                             std::string plates;
                         };
                         const auto exact = [](const std::shared_ptr<Relighter>& r) -> Batch
-                        {
-                            return [r](std::vector<Vec3>& px) { r->apply(px.data(), px.size()); };
-                        };
+                        { return [r](std::vector<Vec3>& px) { r->apply(px.data(), px.size()); }; };
                         const auto asFloat = [](const PixelBatch& f) -> Batch
                         {
                             return [f](std::vector<Vec3>& px)
@@ -330,7 +328,8 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                                 f(buffer.data(), px.size());
                                 for (size_t i = 0; i < px.size(); ++i)
                                 {
-                                    px[i] = Vec3(buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]);
+                                    px[i] =
+                                        Vec3(buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]);
                                 }
                             };
                         };
@@ -440,8 +439,7 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
                         std::vector<Vec3> predicted, ref;
                         evaluate(fitted, all, predicted, ref);
                         rows.push_back(MakeRow(method.name, from, to, inSample, 1.0, false,
-                                               Score(pp.judge, predicted, ref, all),
-                                               plates.key()));
+                                               Score(pp.judge, predicted, ref, all), plates.key()));
                     }
                     // Folds by position (every folds-th sample), the same for every pair.
                     std::vector<Vec3> predicted, ref;
@@ -468,30 +466,30 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
 std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& o)
 {
     const RgbSpace& working = FindRgbSpace(o.workingSpace);
-    return ForEachPair(o, {},
-                       [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
-                       {
-                           const SurfaceRenderer r1(from.spectrum, working, o.observer);
-                           const SurfaceRenderer r2(to.spectrum, working, o.observer);
-                           for (const ReflectanceSet& set : o.sets)
-                           {
-                               const Mat3 m = FitLabMatrix(r1, r2, set.samples);
-                               const RootPolynomial rp = FitRootPolynomial(r1, r2, set.samples, 2);
-                               std::vector<Vec3> by3x3, byRoot, ref;
-                               for (const NamedSpectrum& t : set.samples)
-                               {
-                                   const SurfaceRenderer::Samples r =
-                                       SurfaceRenderer::Sample(t.spectrum);
-                                   by3x3.push_back(m * r1.render(r));
-                                   byRoot.push_back(rp.apply(r1.render(r)));
-                                   ref.push_back(r2.render(r));
-                               }
-                               rows.push_back(MakeRow("floor-3x3", from, to, set.name, 1.0, false,
-                                                      Score(LitJudge(r2), by3x3, ref, set.samples)));
-                               rows.push_back(MakeRow("floor-rootpoly", from, to, set.name, 1.0,
-                                                      false, Score(LitJudge(r2), byRoot, ref, set.samples)));
-                           }
-                       });
+    return ForEachPair(
+        o, {},
+        [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
+        {
+            const SurfaceRenderer r1(from.spectrum, working, o.observer);
+            const SurfaceRenderer r2(to.spectrum, working, o.observer);
+            for (const ReflectanceSet& set : o.sets)
+            {
+                const Mat3 m = FitLabMatrix(r1, r2, set.samples);
+                const RootPolynomial rp = FitRootPolynomial(r1, r2, set.samples, 2);
+                std::vector<Vec3> by3x3, byRoot, ref;
+                for (const NamedSpectrum& t : set.samples)
+                {
+                    const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+                    by3x3.push_back(m * r1.render(r));
+                    byRoot.push_back(rp.apply(r1.render(r)));
+                    ref.push_back(r2.render(r));
+                }
+                rows.push_back(MakeRow("floor-3x3", from, to, set.name, 1.0, false,
+                                       Score(LitJudge(r2), by3x3, ref, set.samples)));
+                rows.push_back(MakeRow("floor-rootpoly", from, to, set.name, 1.0, false,
+                                       Score(LitJudge(r2), byRoot, ref, set.samples)));
+            }
+        });
 }
 
 }  // namespace bandlight

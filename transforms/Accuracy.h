@@ -67,7 +67,7 @@ struct AccuracyOptions
     /// rootpoly-camera is measured on the daylight-IDT plates.
     std::shared_ptr<const SpectralCamera> camera;
     std::string idtLightName = DEFAULT_IDT_LIGHT;  ///< the daylight IDT's light
-    Spectrum idtLight;                              ///< empty: the built-in idtLightName
+    Spectrum idtLight;                             ///< empty: the built-in idtLightName
     /// For each balanced convention, also the lit looks applied to the
     /// balanced plates (plates "<key>-through-lit-looks", ideal forms, "cie"
     /// source): the error of a pipeline that balances its plates and then

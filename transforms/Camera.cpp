@@ -55,7 +55,9 @@ CameraShot::CameraShot(const SpectralCamera& camera, const Spectrum& light)
         if (!(white[c] > 0.0) || !std::isfinite(white[c]))
         {
             throw Exception(camera.label() + ": its " +
-                            (c == 0 ? "red" : c == 1 ? "green" : "blue") +
+                            (c == 0   ? "red"
+                             : c == 1 ? "green"
+                                      : "blue") +
                             " channel records nothing under this light: no white balance exists");
         }
         m_gains[c] = 1.0 / white[c];

@@ -12,8 +12,8 @@
 #include <Eigen/SVD>
 
 #include "spectral/ChromaticAdaptation.h"
-#include "spectral/Illuminants.h"
 #include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
 #include "transforms/SpectralMethods.h"
@@ -75,12 +75,18 @@ MethodSpec ParseMethod(const std::string& name)
     MethodSpec m;
     m.name = n;
     static const std::pair<const char*, ChangeMethod> kFixed[] = {
-        {"none", ChangeMethod::NONE},          {"vonkries", ChangeMethod::VON_KRIES},
-        {"bradford", ChangeMethod::BRADFORD},  {"cat02", ChangeMethod::CAT02},
-        {"fit3x3", ChangeMethod::FIT3X3},      {"prefilter", ChangeMethod::PREFILTER},
-        {"metamer", ChangeMethod::METAMER},    {"upsample", ChangeMethod::UPSAMPLE},
-        {"spectral", ChangeMethod::SPECTRAL},  {"rootpoly", ChangeMethod::ROOTPOLY},
-        {"rootpoly2", ChangeMethod::ROOTPOLY}, {"rootpoly3", ChangeMethod::ROOTPOLY},
+        {"none", ChangeMethod::NONE},
+        {"vonkries", ChangeMethod::VON_KRIES},
+        {"bradford", ChangeMethod::BRADFORD},
+        {"cat02", ChangeMethod::CAT02},
+        {"fit3x3", ChangeMethod::FIT3X3},
+        {"prefilter", ChangeMethod::PREFILTER},
+        {"metamer", ChangeMethod::METAMER},
+        {"upsample", ChangeMethod::UPSAMPLE},
+        {"spectral", ChangeMethod::SPECTRAL},
+        {"rootpoly", ChangeMethod::ROOTPOLY},
+        {"rootpoly2", ChangeMethod::ROOTPOLY},
+        {"rootpoly3", ChangeMethod::ROOTPOLY},
         {"rootpoly-camera", ChangeMethod::ROOTPOLY_CAMERA},
         {"rootpoly2-camera", ChangeMethod::ROOTPOLY_CAMERA},
         {"rootpoly3-camera", ChangeMethod::ROOTPOLY_CAMERA},
@@ -428,9 +434,8 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
         // camera's own IDT for `from` sees it (for the observer as camera,
         // exactly the plain path's input); the root polynomial, fitted from
         // those records to the truth under `to`, corrects the rest.
-        const Spectrum daylight = method.idtLight.empty()
-                                      ? BuiltinIlluminant(method.idtLightName)
-                                      : method.idtLight;
+        const Spectrum daylight =
+            method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
         const SpectralCamera& camera = *method.camera;
         const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
         const Mat3 cameraLit =
@@ -557,7 +562,8 @@ void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
     if (m_rootpoly)
     {
         // A few ns a pixel: the vectorised root polynomial.
-        ParallelFor(count, count < 65536 ? 1 : threads, [&](size_t begin, size_t end)
+        ParallelFor(count, count < 65536 ? 1 : threads,
+                    [&](size_t begin, size_t end)
                     { m_rootpoly->apply(rgb + 3 * begin, end - begin); });
         return;
     }

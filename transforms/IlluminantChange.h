@@ -35,7 +35,7 @@ enum class ChangeMethod
     /// rootpoly fitted from a camera's own record: for plates made with one
     /// fixed daylight IDT and white-balance gains
     ROOTPOLY_CAMERA,
-    SPECTRAL,   ///< the exact answer for known spectra: the reference, not an image transform
+    SPECTRAL,  ///< the exact answer for known spectra: the reference, not an image transform
 };
 
 /// A method with its parameters, parsed from its name: "none", "vonkries",

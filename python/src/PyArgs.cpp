@@ -186,6 +186,15 @@ Observer ToObserver(const py::handle& arg)
     return ParseObserver(py::str(arg).cast<std::string>());
 }
 
+const char* const kPlatesDoc = R"doc(
+plates: "balanced" (default: white-balanced to the working white, as every
+ACES IDT delivers them; neutrals stay neutral) or "lit" (carrying src's
+cast); adaptation: how they were balanced, "cat02" or "bradford"; camera:
+the camera sensitivities file (rawtoaces JSON, CSV, CGATS) rootpoly-camera
+needs, camera_idt: the light its one fixed IDT was fitted for (README
+"Plates"). The defaults are the command's.
+)doc";
+
 cli::PlatesOptions PlatesArgs::options() const
 {
     cli::PlatesOptions o;

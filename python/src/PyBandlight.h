@@ -166,10 +166,12 @@ struct PlatesArgs
     std::shared_ptr<const SpectralCamera> loadCamera() const;
 };
 
+/// The docstring paragraph of the plates keywords.
+extern const char* const kPlatesDoc;
+
 /// A method by name, with fit3x3's / rootpoly's training remittances
 /// (None: their defaults) and the plates it is for.
-MethodSpec ToMethod(const std::string& name, const py::handle& training,
-                    const PlatesArgs& plates);
+MethodSpec ToMethod(const std::string& name, const py::handle& training, const PlatesArgs& plates);
 
 /// The bands argument: None is the lecture's VB/VG/VR; a BandSet, a str of
 /// edges ("400,500,600,700", parsed as --bands is) or a sequence of edges.

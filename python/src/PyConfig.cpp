@@ -44,7 +44,9 @@ OCIO::ConstConfigRcPtr ToConfig(const py::object& arg)
 OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std::string>& working,
                          const py::object& illuminants, const py::object& methods,
                          const py::object& observer, int lutSize, const py::object& base,
-                         const std::string& basePaths, const std::string& plates, const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
+                         const std::string& basePaths, const std::string& plates,
+                         const std::string& adaptation, const py::object& camera,
+                         const std::string& cameraIdt)
 {
     const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
     const cli::PlatesOptions platesOptions = platesArgs.options();
@@ -102,7 +104,8 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
 py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
              const std::string& method, const std::string& format, const std::optional<int>& size,
              const std::string& shaper, const std::string& workingName,
-             const py::object& observerArg, const py::object& training, const std::string& plates, const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
+             const py::object& observerArg, const py::object& training, const std::string& plates,
+             const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
 {
     // What `bandlight lut` does (cli/CommandLut.cpp).
     const std::string path = pathArg.string();
@@ -111,7 +114,8 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
     options.size = size.value_or(33);
     options.forceLattice = size.has_value();
     options.shaper = ShaperSpec::Parse(shaper);
-    const MethodSpec spec = ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt});
+    const MethodSpec spec =
+        ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt});
     const Light from = ToLight(src);
     const Light to = ToLight(dst);
     const RgbSpace& working = FindRgbSpace(workingName);
@@ -164,8 +168,9 @@ void AddConfig(py::module_& m)
           py::arg("illuminants") = py::make_tuple("A", "C", "D65", "F2", "F11"),
           py::arg("methods") = py::none(), py::arg("observer") = "1931", py::arg("lut_size") = 65,
           py::arg("base") = py::none(), py::arg("base_paths") = "relative",
-          py::arg("plates") = "balanced", py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55", R"doc(
+          py::arg("plates") = "balanced", py::arg("adaptation") = "cat02",
+          py::arg("camera") = py::none(), py::arg("camera_idt") = "D55",
+          (std::string(R"doc(
 An OCIO v2 config with one look per ordered pair of illuminants and method
 (``<method>_<FROM>_to_<TO>``, and the same as named transforms
 ``relight_<look>``), as ``bandlight config`` writes it; returns the
@@ -183,13 +188,8 @@ LUT size of the non-linear looks (65: ~12 MB a look; 33: 1.6 MB). base: a
 studio config (a file, or a PyOpenColorIO.Config) to extend, leaving all it
 has intact; base_paths: its relative search paths rewritten "relative" to
 out or "absolute".
-plates: "balanced" (default: white-balanced to the working white, as every
-ACES IDT delivers them; neutrals stay neutral) or "lit" (carrying src's
-cast); adaptation: how they were balanced, "cat02" or "bradford"; camera:
-the camera sensitivities file (rawtoaces JSON, CSV, CGATS) rootpoly-camera
-needs, camera_idt: the light its one fixed IDT was fitted for (README
-"Plates"). The same defaults as ``bandlight config``.
-)doc");
+)doc") + kPlatesDoc)
+              .c_str());
     m.def(
         "identify_scene_linear",
         [](const py::object& config)
@@ -207,8 +207,10 @@ needs, camera_idt: the light its one fixed IDT was fitted for (README
           py::arg("method") = "bradford", py::kw_only(), py::arg("format") = "clf",
           py::arg("size") = py::none(), py::arg("shaper") = "log2",
           py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-          py::arg("training") = py::none(), py::arg("plates") = "balanced", py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55", R"doc(
+          py::arg("training") = py::none(), py::arg("plates") = "balanced",
+          py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
+          py::arg("camera_idt") = "D55",
+          (std::string(R"doc(
 Writes the illuminant change from src to dst as a LUT file, as ``bandlight
 lut`` does, through OpenColorIO's own writers. Returns {"lut": path,
 "shaper": companion shaper file or None, "lattice": bool, "output_encoded":
@@ -220,13 +222,8 @@ shaper is written beside as <stem>.shaper.clf: apply it before the LUT and
 its inverse after), resolve_cube, csp, houdini (display-referred [0, 1] data,
 shaper="none"). size: 3D LUT points per axis (default 33). The LUT and its
 shaper are replaced together or not at all.
-plates: "balanced" (default: white-balanced to the working white, as every
-ACES IDT delivers them; neutrals stay neutral) or "lit" (carrying src's
-cast); adaptation: how they were balanced, "cat02" or "bradford"; camera:
-the camera sensitivities file (rawtoaces JSON, CSV, CGATS) rootpoly-camera
-needs, camera_idt: the light its one fixed IDT was fitted for (README
-"Plates"). The same defaults as ``bandlight lut`` and ``apply``.
-)doc");
+)doc") + kPlatesDoc)
+              .c_str());
 }
 
 }  // namespace bandlight::python

@@ -206,17 +206,22 @@ void AddTransforms(py::module_& m)
         "illuminant_change",
         [](const py::object& src, const py::object& dst, const std::string& method,
            const std::string& working, const py::object& observer, int lutSize,
-           const py::object& training, const std::string& plates, const std::string& adaptation, const py::object& camera, const std::string& cameraIdt) -> OCIO::GroupTransformRcPtr
+           const py::object& training, const std::string& plates, const std::string& adaptation,
+           const py::object& camera, const std::string& cameraIdt) -> OCIO::GroupTransformRcPtr
         {
             const Light from = ToLight(src);
             const Light to = ToLight(dst);
-            return IlluminantChangeTransform(from, to, ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt}),
-                                             FindRgbSpace(working), ToObserver(observer), lutSize);
+            return IlluminantChangeTransform(
+                from, to,
+                ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt}),
+                FindRgbSpace(working), ToObserver(observer), lutSize);
         },
         py::arg("src"), py::arg("dst"), py::arg("method") = "bradford", py::kw_only(),
         py::arg("working_space") = "acescg", py::arg("observer") = "1931", py::arg("lut_size") = 33,
-        py::arg("training") = py::none(), py::arg("plates") = "balanced", py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55", R"doc(
+        py::arg("training") = py::none(), py::arg("plates") = "balanced",
+        py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
+        py::arg("camera_idt") = "D55",
+        (std::string(R"doc(
 The illuminant change from src to dst as a PyOpenColorIO.GroupTransform, for
 images in the linear RGB space working_space: what ``bandlight lut`` and
 ``bandlight apply --from --to --method`` use, and what a config's look holds.
@@ -227,13 +232,8 @@ the log2 shaper, a lut_size^3 3D LUT and the inverse shaper. training:
 remittances to fit fit3x3 / rootpoly on (default: their built-in sets).
 Raises ValueError for an unknown method (the message lists them), for
 "spectral" (not an image transform) and for unusable lights.
-plates: "balanced" (default: white-balanced to the working white, as every
-ACES IDT delivers them; neutrals stay neutral) or "lit" (carrying src's
-cast); adaptation: how they were balanced, "cat02" or "bradford"; camera:
-the camera sensitivities file (rawtoaces JSON, CSV, CGATS) rootpoly-camera
-needs, camera_idt: the light its one fixed IDT was fitted for (README
-"Plates"). The same defaults as ``bandlight lut`` and ``apply``.
-)doc");
+)doc") + kPlatesDoc)
+            .c_str());
     m.def(
         "illuminant_change_matrix",
         [](const py::object& src, const py::object& dst, const std::string& method,
@@ -310,15 +310,18 @@ white-balanced plates, CAT02).
         .def(py::init(
                  [](const py::object& src, const py::object& dst, const std::string& method,
                     const std::string& working, const py::object& observer,
-                    const py::object& training, const std::string& plates, const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
+                    const py::object& training, const std::string& plates,
+                    const std::string& adaptation, const py::object& camera,
+                    const std::string& cameraIdt)
                  {
                      return MakeRelighter(src, dst, method, working, observer, training,
                                           PlatesArgs{plates, adaptation, camera, cameraIdt});
                  }),
              py::arg("src"), py::arg("dst"), py::arg("method") = "bradford", py::kw_only(),
              py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-             py::arg("training") = py::none(), py::arg("plates") = "balanced", py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55",
+             py::arg("training") = py::none(), py::arg("plates") = "balanced",
+             py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
+             py::arg("camera_idt") = "D55",
              "src, dst: a name or file (str), a file (os.PathLike) or a Spectrum; method: any\n"
              "image method (not \"spectral\").")
         .def("apply", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = 0,
@@ -349,7 +352,9 @@ white-balanced plates, CAT02).
         "relight",
         [](const py::object& image, const py::object& src, const py::object& dst,
            const std::string& method, const std::string& working, const py::object& observer,
-           const py::object& training, int threads, const py::object& out, const std::string& plates, const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
+           const py::object& training, int threads, const py::object& out,
+           const std::string& plates, const std::string& adaptation, const py::object& camera,
+           const std::string& cameraIdt)
         {
             const PyRelighter r = MakeRelighter(src, dst, method, working, observer, training,
                                                 PlatesArgs{plates, adaptation, camera, cameraIdt});
@@ -358,8 +363,8 @@ white-balanced plates, CAT02).
         py::arg("image"), py::arg("src"), py::arg("dst"), py::arg("method") = "bradford",
         py::kw_only(), py::arg("working_space") = "acescg", py::arg("observer") = "1931",
         py::arg("training") = py::none(), py::arg("threads") = 0, py::arg("out") = py::none(),
-        py::arg("plates") = "balanced", py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55",
+        py::arg("plates") = "balanced", py::arg("adaptation") = "cat02",
+        py::arg("camera") = py::none(), py::arg("camera_idt") = "D55",
         (std::string("Relighter(src, dst, method, ...).apply(image, threads=threads, out=out):\n") +
          kApplyDoc)
             .c_str());

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <map>
 
-#include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include "cli/RunCommand.h"
 #include "spectral/CieData.h"
@@ -67,8 +67,8 @@ TEST_CASE("apply: balanced plates keep greys grey, lit plates lose the cast", "[
         INFO(method);
         const std::string out = TempPath(std::string("greys_") + method + ".exr");
         // The default: balanced plates (CAT02).
-        Result r = Bandlight("apply '" + in + "' '" + out + "' --from A --to D65 --method " +
-                             method);
+        Result r =
+            Bandlight("apply '" + in + "' '" + out + "' --from A --to D65 --method " + method);
         REQUIRE(r.code == 0);
         std::vector<float> px = ReadRow(out);
         for (size_t i = 0; i < px.size(); ++i)
@@ -107,8 +107,10 @@ TEST_CASE("lut and config say which plates they were written for", "[cli][plates
     CHECK_THAT(r.out, Contains("for lit plates"));
 
     const std::string lut = TempPath("plates_bradford.clf");
-    r = Bandlight("lut --from A --to D65 --method bradford --plates balanced --adaptation "
-                  "bradford -o '" + lut + "'");
+    r = Bandlight(
+        "lut --from A --to D65 --method bradford --plates balanced --adaptation "
+        "bradford -o '" +
+        lut + "'");
     REQUIRE(r.code == 0);
     std::ifstream l(lut);
     std::stringstream clf;
@@ -116,15 +118,17 @@ TEST_CASE("lut and config say which plates they were written for", "[cli][plates
     CHECK_THAT(clf.str(), Contains("balanced to ACEScg&apos;s white by Bradford"));
 }
 
-TEST_CASE("accuracy --camera: the observer as a camera reproduces plain accuracy, and the JSON "
-          "names the camera",
-          "[cli][plates][camera][accuracy]")
+TEST_CASE(
+    "accuracy --camera: the observer as a camera reproduces plain accuracy, and the JSON "
+    "names the camera",
+    "[cli][plates][camera][accuracy]")
 {
     const std::string camera = ObserverCameraFile();
     const std::string json = TempPath("accuracy_camera.json");
-    const Result r = Bandlight("accuracy --illuminants A,F11,D65 --methods bradford,rootpoly "
-                               "--no-cost --ideal-only --camera '" +
-                               camera + "' --json '" + json + "'");
+    const Result r = Bandlight(
+        "accuracy --illuminants A,F11,D65 --methods bradford,rootpoly "
+        "--no-cost --ideal-only --camera '" +
+        camera + "' --json '" + json + "'");
     REQUIRE(r.code == 0);
     CHECK_THAT(r.out, Contains("the camera adds"));
     std::ifstream f(json);

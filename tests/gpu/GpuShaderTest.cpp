@@ -20,8 +20,8 @@
 #include "gpu/GpuRunner.h"
 #include "luts/LutWriter.h"
 #include "plugin/ConfigBuilder.h"
-#include "spectral/CameraFile.h"
 #include "robustness/HardValues.h"
+#include "spectral/CameraFile.h"
 #include "spectral/Illuminants.h"
 
 using namespace bandlight;
@@ -601,23 +601,21 @@ TEST_CASE("Every transform of the default package config compiles and runs on th
     report.print("default package config, " + std::to_string(cases.size()) + " transforms");
 }
 
-TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", "[gpu]")
+namespace
+{
+/// Writes the config `options` describe, reads it back from its file (so
+/// that the looks' FileTransforms find luts/), and runs every transform's
+/// shaders: compiled in every language, run on llvmpipe against the CPU.
+/// Returns how many of them are LUTs.
+long CheckConfigOnGpu(const ConfigOptions& options, const std::string& name)
 {
     Report report;
     Clock::time_point t = Clock::now();
-    ConfigOptions options;
-    options.lights = {L("A"), L("D65")};
-    options.methods = {"upsample", "bradford"};
-    const TempDir dir("upsample");
+    const TempDir dir(name);
     WriteConfigPackage(BuildConfig(options), dir.path());
-    // Loaded from the file, so that the looks' FileTransforms find luts/.
     const OCIO::ConstConfigRcPtr config =
         OCIO::Config::CreateFromFile((dir.path() + "/config.ocio").c_str());
     const std::vector<Case> cases = ConfigCases(config);
-    const auto luts = std::count_if(cases.begin(), cases.end(),
-                                    [](const Case& c) { return c.kind == Kind::LUT; });
-    // upsample A→D65 and D65→A, as looks and as named transforms.
-    CHECK(luts == 4);
     report.time("config", t);
     t = Clock::now();
     CheckShadersCompile(cases);
@@ -625,7 +623,19 @@ TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", 
     t = Clock::now();
     CheckGpuMatchesCpu(cases, report);
     report.time("GPU runs", t);
-    report.print("upsample config, " + std::to_string(cases.size()) + " transforms");
+    report.print(name + " config, " + std::to_string(cases.size()) + " transforms");
+    return std::count_if(cases.begin(), cases.end(),
+                         [](const Case& c) { return c.kind == Kind::LUT; });
+}
+}  // namespace
+
+TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", "[gpu]")
+{
+    ConfigOptions options;
+    options.lights = {L("A"), L("D65")};
+    options.methods = {"upsample", "bradford"};
+    // upsample A→D65 and D65→A, as looks and as named transforms.
+    CHECK(CheckConfigOnGpu(options, "upsample") == 4);
 }
 
 TEST_CASE("Looks for lit and balanced plates, rootpoly-camera included, compile and run on the GPU",
@@ -642,8 +652,6 @@ TEST_CASE("Looks for lit and balanced plates, rootpoly-camera included, compile 
     for (const Plates plates : {Plates{PlateConvention::LIT, AdaptationMethod::CAT02},
                                 Plates{PlateConvention::BALANCED, AdaptationMethod::BRADFORD}})
     {
-        Report report;
-        Clock::time_point t = Clock::now();
         ConfigOptions options;
         options.lights = {L("A"), L("D65")};
         options.methods = {"band3", "rootpoly", "rootpoly-camera"};
@@ -651,24 +659,8 @@ TEST_CASE("Looks for lit and balanced plates, rootpoly-camera included, compile 
         options.camera =
             std::make_shared<const SpectralCamera>(ReadCameraText(csv.str(), "gaussian.csv"));
         options.lutSize = 33;
-        const TempDir dir("plates_" + plates.key());
-        WriteConfigPackage(BuildConfig(options), dir.path());
-        const OCIO::ConstConfigRcPtr config =
-            OCIO::Config::CreateFromFile((dir.path() + "/config.ocio").c_str());
-        const std::vector<Case> cases = ConfigCases(config);
-        const auto luts = std::count_if(cases.begin(), cases.end(),
-                                        [](const Case& c) { return c.kind == Kind::LUT; });
         // rootpoly and rootpoly-camera, A→D65 and D65→A, looks and named transforms.
-        CHECK(luts == 8);
-        report.time("config", t);
-        t = Clock::now();
-        CheckShadersCompile(cases);
-        report.time("shaders", t);
-        t = Clock::now();
-        CheckGpuMatchesCpu(cases, report);
-        report.time("GPU runs", t);
-        report.print(plates.key() + " plates config, " + std::to_string(cases.size()) +
-                     " transforms");
+        CHECK(CheckConfigOnGpu(options, "plates_" + plates.key()) == 8);
     }
 }
 

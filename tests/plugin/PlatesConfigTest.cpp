@@ -78,9 +78,9 @@ TEST_CASE("Written configs apply each plate convention's looks as the library do
             {
                 const std::string look = LookName(method, from, "D65");
                 INFO(plates.key() << " " << look);
-                CHECK_THAT(config->getLook(look.c_str())->getDescription(),
-                           Contains(plates.balanced() ? "For white-balanced plates"
-                                                      : "For lit plates"));
+                CHECK_THAT(
+                    config->getLook(look.c_str())->getDescription(),
+                    Contains(plates.balanced() ? "For white-balanced plates" : "For lit plates"));
                 OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
                 t->setSrc("ACEScg");
                 t->setDst("ACEScg");
@@ -89,14 +89,13 @@ TEST_CASE("Written configs apply each plate convention's looks as the library do
                 const Relighter exact(L(from), L("D65"), o.method(method), ws);
                 // Plates of this convention: the TCS under `from`, balanced or not.
                 const SurfaceRenderer r(BuiltinIlluminant(from), ws);
-                const Mat3 toPlate = plates.balanced()
-                                         ? BalanceMatrix(BuiltinIlluminant(from), ws,
-                                                         plates.adaptation)
-                                         : Mat3::Identity();
+                const Mat3 toPlate = plates.balanced() ? BalanceMatrix(BuiltinIlluminant(from), ws,
+                                                                       plates.adaptation)
+                                                       : Mat3::Identity();
                 const bool lut = !exact.isLinear();
                 const SurfaceRenderer rD65(BuiltinIlluminant("D65"), ws);
-                const Vec3 labWhite = plates.balanced() ? WorkingWhiteXyz(ws)
-                                                        : Vec3(rD65.rgbToXyz() * rD65.white());
+                const Vec3 labWhite =
+                    plates.balanced() ? WorkingWhiteXyz(ws) : Vec3(rD65.rgbToXyz() * rD65.white());
                 double sum = 0.0, worst = 0.0;
                 int n = 0;
                 for (const NamedSpectrum& s : TestColourSamples())
@@ -143,8 +142,7 @@ TEST_CASE("Written configs apply each plate convention's looks as the library do
                     // A balanced grey lies on the LUT's diagonal, exact to float
                     // precision; a lit white (A's is orange) lies off it and
                     // carries the lattice's interpolation error (1.5 % for A).
-                    const double tolerance =
-                        !lut ? 1e-6 : plates.balanced() ? 1e-4 : 0.02;
+                    const double tolerance = !lut ? 1e-6 : plates.balanced() ? 1e-4 : 0.02;
                     CHECK((got - greyOut).cwiseAbs().maxCoeff() < tolerance);
                 }
             }

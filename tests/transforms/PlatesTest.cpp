@@ -44,7 +44,8 @@ CameraSensitivities GaussianCamera(double r, double g, double b, double width)
     csv << "wavelength,R,G,B\n";
     for (int l = 380; l <= 780; l += 5)
     {
-        const auto gauss = [&](double peak) { return std::exp(-0.5 * std::pow((l - peak) / width, 2)); };
+        const auto gauss = [&](double peak)
+        { return std::exp(-0.5 * std::pow((l - peak) / width, 2)); };
         csv << l << "," << gauss(r) << "," << gauss(g) << "," << gauss(b) << "\n";
     }
     return ReadCameraText(csv.str(), "gaussian.csv");
@@ -161,8 +162,8 @@ TEST_CASE("Balanced plates through balanced looks score as lit plates through li
     const std::vector<AccuracyRow> rows = MeasureAccuracy(o);
     const std::vector<AccuracyRow> cv = CrossValidate(o, 5);
     // The acceptance pairs: A, F2, F11 -> D65.
-    for (const std::string& set : {HeldOutTcs().name, std::string("random"),
-                                   std::string("training, 5-fold")})
+    for (const std::string& set :
+         {HeldOutTcs().name, std::string("random"), std::string("training, 5-fold")})
     {
         const std::vector<AccuracyRow>& from = set.rfind("training", 0) == 0 ? cv : rows;
         for (const std::string& m : o.methods)
@@ -289,9 +290,9 @@ TEST_CASE("Knowing the camera wins back error on daylight-IDT plates", "[transfo
         const auto cie = MeanBy(rows, "balanced-cat02", "cie", set);
         const auto camera = MeanBy(rows, "balanced-cat02", "camera", set);
         const auto daylight = MeanBy(rows, "balanced-cat02", "camera-daylight-idt", set);
-        INFO(set << ": rootpoly cie " << cie.at("rootpoly") << ", camera "
-                 << camera.at("rootpoly") << ", daylight IDT " << daylight.at("rootpoly")
-                 << ", rootpoly-camera " << daylight.at("rootpoly-camera"));
+        INFO(set << ": rootpoly cie " << cie.at("rootpoly") << ", camera " << camera.at("rootpoly")
+                 << ", daylight IDT " << daylight.at("rootpoly") << ", rootpoly-camera "
+                 << daylight.at("rootpoly-camera"));
         // The camera adds error; one daylight IDT adds more; knowing the camera wins it back.
         CHECK(camera.at("rootpoly") > cie.at("rootpoly"));
         CHECK(daylight.at("rootpoly") > camera.at("rootpoly"));
@@ -310,11 +311,10 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
     CHECK(c.name == "acme one");
     CHECK(c.red.start() == 400.0);
     CHECK(c.red.step() == 100.0);
-    CHECK(c.red[2] == 0.9);   // index.main puts R last
+    CHECK(c.red[2] == 0.9);  // index.main puts R last
     CHECK(c.blue[0] == 0.9);
-    const CameraSensitivities csv =
-        ReadCameraText("nm,blue,green,red\n400,0.9,0.1,0\n500,0.1,0.9,0.1\n600,0,0.1,0.9\n",
-                       "cam.csv");
+    const CameraSensitivities csv = ReadCameraText(
+        "nm,blue,green,red\n400,0.9,0.1,0\n500,0.1,0.9,0.1\n600,0,0.1,0.9\n", "cam.csv");
     CHECK(csv.red[2] == 0.9);
     CHECK(csv.blue[0] == 0.9);
     const CameraSensitivities cgats = ReadCameraText(
@@ -325,8 +325,9 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
         "cam.sp");
     CHECK(cgats.green[1] == 0.9);
 
-    CHECK_THROWS_WITH(ReadCameraText("{\n \"header\": {},\n \"spectral_data\": [1,, 2]\n}\n", "bad.json"),
-                      Contains("bad.json:3: not valid JSON"));
+    CHECK_THROWS_WITH(
+        ReadCameraText("{\n \"header\": {},\n \"spectral_data\": [1,, 2]\n}\n", "bad.json"),
+        Contains("bad.json:3: not valid JSON"));
     CHECK_THROWS_WITH(ReadCameraText("{\"header\": {}}", "nodata.json"),
                       Contains("nodata.json: no \"spectral_data\""));
     CHECK_THROWS_WITH(
@@ -335,28 +336,34 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
                        "irregular.json"),
         Contains("irregular.json: wavelengths 410 and 430 break the regular grid"));
     CHECK_THROWS_WITH(
-        ReadCameraText(R"({"spectral_data": {"data": {"main": {"400": [1, "x", 0], "410": [0, 1, 0]}}}})",
-                       "text.json"),
+        ReadCameraText(
+            R"({"spectral_data": {"data": {"main": {"400": [1, "x", 0], "410": [0, 1, 0]}}}})",
+            "text.json"),
         Contains("text.json: spectral_data.data.main \"400\": value \"x\" is not a finite number"));
     CHECK_THROWS_WITH(
-        ReadCameraText(R"({"spectral_data": {"data": {"main": {"400": [1, 0, 0], "410": [0, 1, 0]}}}})",
-                       "blind.json"),
+        ReadCameraText(
+            R"({"spectral_data": {"data": {"main": {"400": [1, 0, 0], "410": [0, 1, 0]}}}})",
+            "blind.json"),
         Contains("blind.json: the blue channel has no response over 380-780 nm"));
     CHECK_THROWS_WITH(
-        ReadCameraText(R"({"spectral_data": {"data": {"main": {"400": [1, -0.5, 1], "410": [0, 1, 1]}}}})",
-                       "negative.json"),
+        ReadCameraText(
+            R"({"spectral_data": {"data": {"main": {"400": [1, -0.5, 1], "410": [0, 1, 1]}}}})",
+            "negative.json"),
         Contains("negative.json: the green channel responds -0.5 at 400 nm"));
-    CHECK_THROWS_WITH(ReadCameraText("nm,a,b\n400,1,0\n500,0,1\n", "two.csv"),
-                      Contains("two.csv: a camera file holds three spectra (R, G, B), this one has 2"));
+    CHECK_THROWS_WITH(
+        ReadCameraText("nm,a,b\n400,1,0\n500,0,1\n", "two.csv"),
+        Contains("two.csv: a camera file holds three spectra (R, G, B), this one has 2"));
     // A camera blind to a light cannot be balanced for it.
-    const SpectralCamera blue(ReadCameraText("nm,r,g,b\n380,0,0,1\n420,0,0,1\n440,0,0,0\n"
-                                             "450,1,1,0\n780,1,1,0\n",
-                                             "ir.csv"));
+    const SpectralCamera blue(
+        ReadCameraText("nm,r,g,b\n380,0,0,1\n420,0,0,1\n440,0,0,0\n"
+                       "450,1,1,0\n780,1,1,0\n",
+                       "ir.csv"));
     std::vector<double> red(81, 0.0);
     red[80] = 1.0;
     CHECK_NOTHROW(CameraShot(blue, BuiltinIlluminant("D65")));
-    CHECK_THROWS_WITH(CameraShot(blue, Spectrum(380.0, 5.0, red)),
-                      Contains("ir.csv: camera: its blue channel records nothing under this light"));
+    CHECK_THROWS_WITH(
+        CameraShot(blue, Spectrum(380.0, 5.0, red)),
+        Contains("ir.csv: camera: its blue channel records nothing under this light"));
 }
 
 TEST_CASE("rootpoly-camera needs a camera", "[transforms][camera]")
