@@ -474,27 +474,29 @@ void CheckGpuMatchesCpu(const std::vector<Case>& cases, Report& report)
     }
 }
 
-/// Writes the config `options` describe, reads it back from its file (so
-/// that the looks' FileTransforms find luts/), and runs every transform's
-/// shaders: compiled in every language, run on llvmpipe against the CPU.
-/// Returns how many of them are LUTs.
-long CheckConfigOnGpu(const ConfigOptions& options, const std::string& name)
+void CheckCasesOnGpu(const std::vector<Case>& cases, const std::string& title, Report& report)
 {
-    Report report;
     Clock::time_point t = Clock::now();
-    const TempDir dir(name);
-    WriteConfigPackage(BuildConfig(options), dir.path());
-    const OCIO::ConstConfigRcPtr config =
-        OCIO::Config::CreateFromFile((dir.path() + "/config.ocio").c_str());
-    const std::vector<Case> cases = ConfigCases(config);
-    report.time("config", t);
-    t = Clock::now();
     CheckShadersCompile(cases);
     report.time("shaders", t);
     t = Clock::now();
     CheckGpuMatchesCpu(cases, report);
     report.time("GPU runs", t);
-    report.print(name + " config, " + std::to_string(cases.size()) + " transforms");
+    report.print(title + ", " + std::to_string(cases.size()) + " transforms");
+}
+
+long CheckConfigOnGpu(const ConfigOptions& options, const std::string& name)
+{
+    Report report;
+    const Clock::time_point t = Clock::now();
+    const TempDir dir(name);
+    WriteConfigPackage(BuildConfig(options), dir.path());
+    // Read back from the file, so that the looks' FileTransforms find luts/.
+    const OCIO::ConstConfigRcPtr config =
+        OCIO::Config::CreateFromFile((dir.path() + "/config.ocio").c_str());
+    const std::vector<Case> cases = ConfigCases(config);
+    report.time("config", t);
+    CheckCasesOnGpu(cases, name + " config", report);
     return std::count_if(cases.begin(), cases.end(),
                          [](const Case& c) { return c.kind == Kind::LUT; });
 }

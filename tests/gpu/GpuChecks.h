@@ -194,6 +194,10 @@ void CheckShadersCompile(const std::vector<Case>& cases);
 /// Every case on llvmpipe in each runnable language against the CPU.
 void CheckGpuMatchesCpu(const std::vector<Case>& cases, Report& report);
 
+/// Both checks above on `cases`, timed into `report`, which is printed
+/// under `title`.
+void CheckCasesOnGpu(const std::vector<Case>& cases, const std::string& title, Report& report);
+
 /// Writes the config `options` describe, reads it back from its file (so
 /// that the looks' FileTransforms find luts/), and runs every transform's
 /// shaders: compiled in every language, run on llvmpipe against the CPU.

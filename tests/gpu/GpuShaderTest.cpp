@@ -22,18 +22,12 @@ using namespace bandlight::test;
 TEST_CASE("Every transform of the default package config compiles and runs on the GPU", "[gpu]")
 {
     Report report;
-    Clock::time_point t = Clock::now();
+    const Clock::time_point t = Clock::now();
     const std::vector<Case> cases = ConfigCases(PackageConfig());
     // 120 looks, 120 named transforms, the colour spaces both ways, 2 views.
     REQUIRE(cases.size() > 240);
     report.time("config", t);
-    t = Clock::now();
-    CheckShadersCompile(cases);
-    report.time("shaders", t);
-    t = Clock::now();
-    CheckGpuMatchesCpu(cases, report);
-    report.time("GPU runs", t);
-    report.print("default package config, " + std::to_string(cases.size()) + " transforms");
+    CheckCasesOnGpu(cases, "default package config", report);
 }
 
 TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", "[gpu]")
