@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The README's Python example runs as printed."""
+"""The Python example of docs/python.md runs as printed."""
 
 import re
 import subprocess
@@ -12,10 +12,8 @@ from conftest import SOURCE_DIR
 
 
 def readme_example():
-    text = (SOURCE_DIR / "README.md").read_text()
-    section = text[text.index("\n## Python\n"):]
-    section = section[:section.index("\n## ", 1)]
-    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
+    text = (SOURCE_DIR / "docs" / "python.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
     assert len(blocks) == 1
     return blocks[0]
 
