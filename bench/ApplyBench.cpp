@@ -8,7 +8,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "cli/ImageApply.h"
+#include "jobs/ImageApply.h"
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
@@ -60,7 +60,7 @@ void ApplyImage(benchmark::State& state, const OCIO::ConstCPUProcessorRcPtr& cpu
     const int rgb[3] = {0, 1, 2};
     for (auto _ : state)
     {
-        cli::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
+        jobs::ApplyToBuffer(cpu, px.data(), kWidth, kHeight, 4, rgb, int(state.range(0)));
         benchmark::ClobberMemory();
     }
     Report(state);

@@ -3,11 +3,9 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "spectral/ColourRendering.h"
+#include "jobs/ColourJobs.h"
 
 namespace bandlight::cli
 {
@@ -23,28 +21,15 @@ struct CriOptions
 
 void RunCri(const CriOptions& o)
 {
-    const NamedSpectrum illuminant = ResolveIlluminant(o.illuminant);
-    const ColourRendering cr = ComputeColourRendering(illuminant.spectrum);
-    RequireFinite(cr.cctK, "CCT");
-    RequireFinite(cr.duv, "Duv");
-    RequireFinite(cr.ra, "Ra");
-    for (size_t i = 0; i < cr.r.size(); ++i)
-    {
-        RequireFinite(cr.r[i], "R" + std::to_string(i + 1));
-    }
+    CommandReporter reporter;
+    const jobs::CriResult result = jobs::MakeCri(jobs::ResolveIlluminant(o.illuminant, reporter));
     if (o.json)
     {
-        nlohmann::ordered_json j;
-        j["illuminant"] = illuminant.name;
-        j["cct_K"] = cr.cctK;
-        j["duv"] = cr.duv;
-        j["Ra"] = cr.ra;
-        j["R"] = cr.r;
-        j["outside_duv_tolerance"] = cr.outsideTolerance;
-        std::cout << j.dump(2) << "\n";
+        std::cout << jobs::CriDocument(result) << "\n";
         return;
     }
-    std::cout << "Illuminant " << illuminant.name << " (CIE 13.3-1995, CIE 1931 observer)\n"
+    const ColourRendering& cr = result.rendering;
+    std::cout << "Illuminant " << result.illuminant << " (CIE 13.3-1995, CIE 1931 observer)\n"
               << "  CCT " << Fixed(cr.cctK, 1) << " K, Duv " << Fixed(cr.duv, 5) << "\n"
               << "  Ra  " << Fixed(cr.ra, 1) << "\n";
     for (size_t i = 0; i < cr.r.size(); ++i)

@@ -8,7 +8,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "cli/Gnuplot.h"
+#include "jobs/Gnuplot.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "transforms/BandModel.h"
@@ -57,7 +57,8 @@ void RunPlot(const PlotOptions& o)
     }
     else if (!o.illuminant.empty())
     {
-        const NamedSpectrum s = ResolveIlluminant(o.illuminant);
+        CommandReporter reporter;
+        const Light s = jobs::ResolveIlluminant(o.illuminant, reporter);
         curves = {{s.name, s.spectrum}};
         // The lecture normalises illuminant band means to the largest band = 1.
         const std::vector<double> means = BandMeans(s.spectrum, bands);
@@ -67,7 +68,8 @@ void RunPlot(const PlotOptions& o)
     }
     else
     {
-        for (const NamedSpectrum& s : ResolveReflectances(o.reflectance))
+        CommandReporter reporter;
+        for (const NamedSpectrum& s : jobs::ResolveReflectances(o.reflectance, reporter))
         {
             curves.push_back({s.name, s.spectrum});
         }
@@ -80,13 +82,13 @@ void RunPlot(const PlotOptions& o)
     std::ostringstream data, plot;
     // Names and titles come from files and file names: quoted so gnuplot
     // shows them and never evaluates them.
-    plot << "set title " << GnuplotQuote(title) << "\nset xlabel 'wavelength (nm)'\nset ylabel "
-         << GnuplotQuote(ylabel) << "\nset grid\nset key top right\nset xrange [360:830]\n";
+    plot << "set title " << jobs::GnuplotQuote(title) << "\nset xlabel 'wavelength (nm)'\nset ylabel "
+         << jobs::GnuplotQuote(ylabel) << "\nset grid\nset key top right\nset xrange [360:830]\n";
     for (const Band& b : bands)
     {
         plot << "set arrow from " << b.minNm << ", graph 0 to " << b.minNm
              << ", graph 1 nohead dt 3 lc rgb '#888888'\n";
-        plot << "set label " << GnuplotQuote(b.name) << " at " << 0.5 * (b.minNm + b.maxNm)
+        plot << "set label " << jobs::GnuplotQuote(b.name) << " at " << 0.5 * (b.minNm + b.maxNm)
              << ", graph 0.97 center\n";
     }
     plot << "set arrow from " << bands.bands().back().maxNm << ", graph 0 to "
@@ -112,13 +114,13 @@ void RunPlot(const PlotOptions& o)
         const char* colour = colours[c % 6];
         plot << (c ? ", \\\n     " : "") << "$bandlight_data index " << index
              << " using 1:2 with lines lw 2 lc rgb '" << colour << "' title "
-             << GnuplotQuote(cv.name) << ", \\\n     $bandlight_data index " << index + 1
+             << jobs::GnuplotQuote(cv.name) << ", \\\n     $bandlight_data index " << index + 1
              << " using 1:2 with lines lw 3 dt 2 lc rgb '" << colour << "' title "
-             << GnuplotQuote(cv.name + " band means");
+             << jobs::GnuplotQuote(cv.name + " band means");
         index += 2;
     }
     plot << "\n";
-    RunGnuplot(plot.str(), data.str(), o.out);
+    jobs::RunGnuplot(plot.str(), data.str(), o.out);
     std::cout << "Wrote " << o.out << "\n";
 }
 

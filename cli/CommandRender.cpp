@@ -11,9 +11,9 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "cli/ImageApply.h"
+#include "jobs/ImageApply.h"
+#include "jobs/RenderJob.h"
 #include "plugin/ConfigBuilder.h"
-#include "render/SceneFile.h"
 #include "render/SceneRenderer.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
@@ -26,6 +26,11 @@ namespace bandlight::cli
 
 namespace
 {
+using jobs::ApplyToBuffer;
+using jobs::ImageDescription;
+using jobs::LinearImageDescription;
+using jobs::PixelType;
+using jobs::WriteImage;
 
 struct RenderOptions
 {
@@ -117,20 +122,9 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
 
 void RunRender(const RenderOptions& o)
 {
-    Scene scene = ReadSceneFile(o.scene);
-    if (!o.mode.empty())
-    {
-        if (ModeBandCount(o.mode) == 0 && scene.settings.output == "bands")
-        {
-            // Band values exist only in band mode; switching the output to
-            // an RGB space behind the user's back would hide that.
-            throw Exception("--mode spectral: " + o.scene +
-                            " asks for output 'bands' (band values), which only band mode "
-                            "writes; set render: {output: acescg} (or another working space) to "
-                            "render it spectrally");
-        }
-        SetRenderMode(scene.settings, o.mode);
-    }
+    const Scene scene = jobs::LoadScene(
+        o.scene, std::nullopt, o.scene,
+        o.mode.empty() ? std::nullopt : std::optional<std::string>(o.mode));
     // --unplanned says what the literal path does, not what a plan would.
     const ScenePlan plan = o.unplanned ? ScenePlan{} : PlanScene(scene);
     std::cout << (o.unplanned ? ExplainUnplanned(scene) : ExplainPlan(scene, plan));

@@ -4,12 +4,9 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "spectral/Illuminants.h"
-#include "transforms/BandModel.h"
+#include "jobs/ColourJobs.h"
 
 namespace bandlight::cli
 {
@@ -19,26 +16,9 @@ namespace
 
 struct TablesOptions
 {
-    std::string bands = "400,500,600,700";
-    std::string observer;
-    std::string rule = "lecture";
+    jobs::TablesRequest request;
     bool json = false;
 };
-
-nlohmann::ordered_json RowsJson(const Eigen::MatrixXd& m, const char* names[3])
-{
-    nlohmann::ordered_json j;
-    for (int k = 0; k < 3; ++k)
-    {
-        std::vector<double> row(size_t(m.cols()));
-        for (Eigen::Index b = 0; b < m.cols(); ++b)
-        {
-            row[size_t(b)] = m(k, b);
-        }
-        j[names[k]] = row;
-    }
-    return j;
-}
 
 void PrintRow(const std::string& label, const std::vector<double>& v, int decimals)
 {
@@ -67,55 +47,19 @@ void PrintHeader(const std::string& title, const BandSet& bands)
 
 void RunTables(const TablesOptions& o)
 {
-    const BandSet bands = BandSet::Parse(o.bands);
-    const Observer observer = ParseObserver(o.observer);
-    const BandRule rule = ParseBandRule(o.rule);
-    const Eigen::MatrixXd xyz = MatchingBandMatrix(bands, MatchingSet::XYZ, observer, rule);
-    const Eigen::MatrixXd rgb = MatchingBandMatrix(bands, MatchingSet::EBU_RGB, observer, rule);
-
-    std::vector<std::pair<std::string, std::vector<double>>> illuminants;
-    for (const std::string& name : StandardIlluminantNames())
-    {
-        illuminants.emplace_back(name, IlluminantBands(BuiltinIlluminant(name), bands, rule));
-    }
-    std::vector<std::pair<std::string, std::vector<double>>> remittances;
-    for (const NamedSpectrum& s : TestColourSamples())
-    {
-        remittances.emplace_back(s.name, RemittanceBands(s.spectrum, bands, rule));
-    }
-
+    const jobs::TablesResult t = jobs::MakeTables(o.request);
     if (o.json)
     {
-        const char* xyzNames[3] = {"x", "y", "z"};
-        const char* rgbNames[3] = {"r", "g", "b"};
-        nlohmann::ordered_json j;
-        j["bands"] = nlohmann::ordered_json::array();
-        for (const Band& b : bands)
-        {
-            j["bands"].push_back({{"name", b.name}, {"min_nm", b.minNm}, {"max_nm", b.maxNm}});
-        }
-        const std::string key = observer == Observer::CIE1931_2DEG ? "cie1931_xyz" : "cie1964_xyz";
-        j["observer"] = observer == Observer::CIE1931_2DEG ? "1931" : "1964";
-        j["rule"] = rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact";
-        j["matching_functions"][key] = RowsJson(xyz, xyzNames);
-        j["matching_functions"]["ebu_rgb"] = RowsJson(rgb, rgbNames);
-        j["condition_number"] = {{key, ConditionNumber(xyz)},
-                                 {"ebu_rgb", ConditionNumber(rgb)},
-                                 {"limit", MAX_BAND_CONDITION}};
-        j["illuminants"] = nlohmann::ordered_json::object();
-        for (const auto& [name, v] : illuminants)
-        {
-            j["illuminants"][name] = v;
-        }
-        j["remittances"] = nlohmann::ordered_json::object();
-        for (const auto& [name, v] : remittances)
-        {
-            j["remittances"][name] = v;
-        }
-        std::cout << j.dump(2) << "\n";
+        std::cout << jobs::TablesDocument(t) << "\n";
         return;
     }
-
+    const BandSet& bands = t.bands;
+    const Observer observer = t.observer;
+    const BandRule rule = t.rule;
+    const Eigen::MatrixXd& xyz = t.xyz;
+    const Eigen::MatrixXd& rgb = t.rgb;
+    const auto& illuminants = t.illuminants;
+    const auto& remittances = t.remittances;
     std::cout << "Band model tables: bands " << bands.describe() << " nm, "
               << ObserverName(observer) << " observer, "
               << (rule == BandRule::SAMPLE_MEAN ? "lecture" : "exact") << " band means\n";
@@ -165,10 +109,10 @@ void AddTablesCommand(CLI::App& app)
     auto o = std::make_shared<TablesOptions>();
     CLI::App* cmd = app.add_subcommand(
         "tables", "Print the lecture's band tables: matching functions, illuminants, remittances");
-    cmd->add_option("--bands", o->bands, "Band edges in nm, comma separated")
+    cmd->add_option("--bands", o->request.bands, "Band edges in nm, comma separated")
         ->capture_default_str();
-    AddObserverOption(*cmd, o->observer);
-    cmd->add_option("--rule", o->rule, "Band mean rule: lecture (sample average) or exact")
+    AddObserverOption(*cmd, o->request.observer);
+    cmd->add_option("--rule", o->request.rule, "Band mean rule: lecture (sample average) or exact")
         ->capture_default_str();
     cmd->add_flag("--json", o->json, "Write JSON instead of text tables");
     cmd->callback([o] { RunTables(*o); });

@@ -3,12 +3,9 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "spectral/Colorimetry.h"
-#include "spectral/Exception.h"
+#include "jobs/ColourJobs.h"
 
 namespace bandlight::cli
 {
@@ -26,66 +23,30 @@ struct XyzOptions
 
 void RunXyz(const XyzOptions& o)
 {
-    const NamedSpectrum illuminant = ResolveIlluminant(o.illuminant);
-    const Observer observer = ParseObserver(o.observer);
-    const Vec3 white = IlluminantWhiteXyz(illuminant.spectrum, observer);
-
-    struct Row
+    CommandReporter reporter;
+    jobs::XyzRequest request;
+    request.illuminant = jobs::ResolveIlluminant(o.illuminant, reporter);
+    request.observer = o.observer;
+    if (!o.reflectance.empty())
     {
-        std::string id;
-        Vec3 xyz;
-    };
-    std::vector<Row> rows;
-    if (o.reflectance.empty())
-    {
-        rows.push_back({illuminant.name, white});
+        request.reflectances = jobs::ResolveReflectances(o.reflectance, reporter);
     }
-    else
-    {
-        const XyzIntegrator integrate(illuminant.spectrum, observer);
-        for (const NamedSpectrum& r : ResolveReflectances(o.reflectance))
-        {
-            rows.push_back({r.name, integrate(r.spectrum)});
-        }
-    }
-
-    for (const Row& r : rows)
-    {
-        const Vec3 lab = XyzToLab(r.xyz, white);
-        for (int c = 0; c < 3; ++c)
-        {
-            RequireFinite(r.xyz[c], "XYZ of '" + OneLine(r.id, 80) + "'");
-            RequireFinite(lab[c], "L*a*b* of '" + OneLine(r.id, 80) + "'");
-        }
-    }
+    const jobs::XyzResult result = jobs::MakeXyz(request);
     if (o.json)
     {
-        nlohmann::ordered_json j;
-        j["illuminant"] = illuminant.name;
-        j["observer"] = observer == Observer::CIE1931_2DEG ? "1931" : "1964";
-        j["white_XYZ"] = {white.x(), white.y(), white.z()};
-        j["samples"] = nlohmann::ordered_json::array();
-        for (const Row& r : rows)
-        {
-            const Vec3 xyY = XyzToxyY(r.xyz);
-            const Vec3 lab = XyzToLab(r.xyz, white);
-            j["samples"].push_back({{"id", r.id},
-                                    {"XYZ", {r.xyz.x(), r.xyz.y(), r.xyz.z()}},
-                                    {"xy", {xyY.x(), xyY.y()}},
-                                    {"Lab", {lab.x(), lab.y(), lab.z()}}});
-        }
-        std::cout << j.dump(2) << "\n";
+        std::cout << jobs::XyzDocument(result) << "\n";
         return;
     }
-    std::cout << "Illuminant " << illuminant.name << ", " << ObserverName(observer)
+    const Observer observer = result.observer;
+    std::cout << "Illuminant " << result.illuminant << ", " << ObserverName(observer)
               << " observer; XYZ with the white reflector at Y = 100, L*a*b* relative to the "
                  "illuminant's white\n";
     std::cout << "  id              X         Y         Z        x        y        L*       a*    "
                  "   b*\n";
-    for (const Row& r : rows)
+    for (const jobs::XyzSample& r : result.samples)
     {
-        const Vec3 xyY = XyzToxyY(r.xyz);
-        const Vec3 lab = XyzToLab(r.xyz, white);
+        const Vec3& xyY = r.xyY;
+        const Vec3& lab = r.lab;
         std::string id = r.id.substr(0, 12);
         id.resize(12, ' ');
         std::cout << "  " << id;

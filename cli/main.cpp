@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// bandlight: spectral data → band-model tables, colorimetry and (later) OCIO
-// transforms. Exit codes: 0 success, 2 bad input (one line on stderr), 1
+// bandlight: the command, one face of the jobs library (jobs/): each
+// subcommand maps its flags to a request and prints the result. Exit codes: 0 success, 2 bad input (one line on stderr), 1
 // anything unexpected.
 #include <iostream>
 #include <new>
@@ -11,6 +11,7 @@
 #include "cli/Diagnostics.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
+#include "transforms/Defaults.h"
 
 int main(int argc, char** argv)
 {
@@ -25,7 +26,7 @@ int main(int argc, char** argv)
         "bandlight: the 3-band model of coloured light and surfaces, measured against an exact "
         "spectral core"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "bandlight 0.1.0");
+    app.set_version_flag("--version", std::string("bandlight ") + bandlight::defaults::VERSION);
     bandlight::cli::AddTablesCommand(app);
     bandlight::cli::AddXyzCommand(app);
     bandlight::cli::AddCriCommand(app);
@@ -66,6 +67,11 @@ int main(int argc, char** argv)
     catch (const CLI::ParseError& e)
     {
         return fail(2, "", e.what());
+    }
+    catch (const bandlight::ParameterError& e)
+    {
+        // The library names its parameters; the command spells them as flags.
+        return fail(2, "", e.spelled(bandlight::Face::COMMAND).c_str());
     }
     catch (const bandlight::Exception& e)
     {

@@ -1,25 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/Cost.h"
+#include "jobs/Cost.h"
 
 #include <algorithm>
 #include <chrono>
 #include <random>
 #include <thread>
 
-#include "cli/ImageApply.h"
+#include "jobs/ImageApply.h"
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
+#include "transforms/Defaults.h"
 #include "transforms/SurfaceRenderer.h"
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
-
-namespace
-{
-/// The 3D LUT size `config` gives non-linear looks (ConfigOptions::lutSize).
-constexpr int kShippedLutSize = 65;
-}  // namespace
 
 namespace
 {
@@ -62,7 +57,9 @@ Light L(const char* n)
 }  // namespace
 
 std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
-                                 const std::string& workingSpace, long pixels)
+                                 const std::string& workingSpace, long pixels,
+                                 const std::shared_ptr<const SpectralCamera>& camera,
+                                 const Light& idtLight)
 {
     const RgbSpace& ws = FindRgbSpace(workingSpace);
     std::vector<CostRow> rows;
@@ -70,7 +67,17 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
     const int rgb[3] = {0, 1, 2};
     for (const std::string& name : methods)
     {
-        const MethodSpec method = ParseMethod(name);
+        MethodSpec method = ParseMethod(name);
+        if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
+        {
+            if (!camera)
+            {
+                continue;
+            }
+            method.camera = camera;
+            method.idtLightName = idtLight.name;
+            method.idtLight = idtLight.spectrum;
+        }
         if (method.method == ChangeMethod::SPECTRAL)
         {
             // The exact answer needs a spectrum per pixel: 81 samples through
@@ -107,7 +114,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
         }
         // As a config's look: the LUT size configs use for non-linear methods.
         const OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
-            L("A"), L("D65"), method, ws, Observer::CIE1931_2DEG, kShippedLutSize);
+            L("A"), L("D65"), method, ws, Observer::CIE1931_2DEG, defaults::CONFIG_LUT_SIZE);
         const OCIO::ConstCPUProcessorRcPtr cpu =
             OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
                 OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
@@ -118,7 +125,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                 [&] { ApplyToBuffer(cpu, px.data(), 1920, pixels / 1920, 4, rgb, threads); });
             rows.push_back(
                 {name,
-                 method.isLinear() ? "ocio-matrix" : "ocio-lut" + std::to_string(kShippedLutSize),
+                 method.isLinear() ? "ocio-matrix" : "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE),
                  threads, s * 1e9 / double(pixels)});
         }
         if (!method.isLinear())
@@ -139,7 +146,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                     },
                     1);
                 rows.push_back({name,
-                                method.method == ChangeMethod::ROOTPOLY ? "native" : "direct-fit",
+                                method.method == ChangeMethod::UPSAMPLE ? "direct-fit" : "native",
                                 threads, s * 1e9 / double(n)});
             }
         }
@@ -172,4 +179,4 @@ std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)
     return out;
 }
 
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs

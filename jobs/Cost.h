@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
-namespace bandlight::cli
+#include "transforms/IlluminantChange.h"
+
+namespace bandlight::jobs
 {
 
 /// What applying a method to pixels costs on this machine.
@@ -29,10 +32,14 @@ struct SetupCost
 /// upsample (as its 33³ LUT) through the OCIO CPU processor, upsample's
 /// per-pixel fit directly, and `spectral` as the 3 × 81 integration a
 /// spectral image would need per pixel.
+/// rootpoly-camera is timed with `camera` and its IDT light (skipped
+/// without a camera).
 std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
-                                 const std::string& workingSpace, long pixels);
+                                 const std::string& workingSpace, long pixels,
+                                 const std::shared_ptr<const SpectralCamera>& camera = nullptr,
+                                 const Light& idtLight = {});
 
 /// Fitting fit3x3 and baking upsample LUTs at 17³, 33³ and 65³ (A → D65).
 std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace);
 
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs

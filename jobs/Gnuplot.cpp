@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/Gnuplot.h"
+#include "jobs/Gnuplot.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -16,7 +16,7 @@
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
 
 namespace
@@ -183,4 +183,4 @@ void RunGnuplot(const std::string& script, const std::string& data, const std::s
     own.commit();
 }
 
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs

@@ -5,7 +5,7 @@
 
 #include "spectral/AtomicFile.h"
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
 
 /// `text` as a gnuplot string literal that gnuplot prints but never
@@ -43,4 +43,4 @@ std::string GnuplotDataLabel(const std::string& text);
 void RunGnuplot(const std::string& script, const std::string& data, const std::string& output,
                 OutputSet* outputs = nullptr);
 
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs

@@ -7,11 +7,11 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "cli/ImageFiles.h"
+#include "jobs/ImageFiles.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/RgbSpaces.h"
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -51,18 +51,4 @@ void WriteImage(const std::string& path, const float* pixels, int width, int hei
 /// as the config calls it (`name`) and the space's chromaticities.
 ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name);
 
-/// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
-/// gives "plate.1001.exr"; a name without a pattern is returned unchanged.
-std::string ExpandFramePattern(const std::string& pattern, int frame);
-bool HasFramePattern(const std::string& pattern);
-
-/// Frame numbers are at most this wide in a pattern ("%09d", "#########").
-constexpr int kMaxFrameWidth = 9;
-/// At most this many frames in one call: a farm splits longer ranges.
-constexpr long kMaxFramesPerCall = 1000000;
-
-/// Parses "1001-1100" or "1001" into the frames it names (at most
-/// kMaxFramesPerCall, numbers of at most 9 digits); throws Exception.
-std::vector<int> ParseFrameRange(const std::string& text);
-
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
 
 enum class PixelType
@@ -59,6 +59,6 @@ constexpr int kImageFilesApiVersion = 3;
 /// $BANDLIGHT_IMAGE_MODULE).
 const ImageFilesApi& ImageFiles();
 
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs
 
-extern "C" const bandlight::cli::ImageFilesApi* bandlight_image_files_api();
+extern "C" const bandlight::jobs::ImageFilesApi* bandlight_image_files_api();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The image-file module (see cli/ImageFiles.h): OpenImageIO reading and
+// The image-file module (see jobs/ImageFiles.h): OpenImageIO reading and
 // writing, loaded on demand by the bandlight command.
 #include <unistd.h>
 
@@ -10,11 +10,11 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "cli/ImageFiles.h"
+#include "jobs/ImageFiles.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 
-namespace bandlight::cli
+namespace bandlight::jobs
 {
 namespace
 {
@@ -175,9 +175,9 @@ std::string WriteImage(const std::string& path, const float* pixels, int width, 
 const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &RemoveTemporaryFiles};
 
 }  // namespace
-}  // namespace bandlight::cli
+}  // namespace bandlight::jobs
 
-extern "C" const bandlight::cli::ImageFilesApi* bandlight_image_files_api()
+extern "C" const bandlight::jobs::ImageFilesApi* bandlight_image_files_api()
 {
-    return &bandlight::cli::kApi;
+    return &bandlight::jobs::kApi;
 }

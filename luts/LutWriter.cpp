@@ -350,11 +350,11 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
         // no pre-LUT is needed.
         if (o.shaper.kind != ShaperSpec::Kind::NONE)
         {
-            throw Exception(
+            throw ParameterError(
                 path + ": " + LutExtension(o.format) +
                 " files carry their shaper as a 1D pre-LUT that OpenColorIO 2.1 samples too "
-                "coarsely for scene-linear HDR; use --shaper none for display-referred [0, 1] "
-                "data, or --format cube (or spi3d, 3dl) with its companion shaper CLF");
+                "coarsely for scene-linear HDR; use {shaper=}none for display-referred [0, 1] "
+                "data, or {format=}cube (or spi3d, 3dl) with its companion shaper CLF");
         }
         BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o,
                         o.format == LutFormat::RESOLVE_CUBE ? "resolve_cube"

@@ -244,8 +244,8 @@ void RequireLights(const ConfigOptions& o)
         const MethodSpec spec = o.method(m);
         if (spec.method == ChangeMethod::ROOTPOLY_CAMERA && !spec.camera)
         {
-            throw Exception("method '" + spec.name +
-                            "' needs the camera that shot the plates (--camera FILE)");
+            throw ParameterError("method '" + spec.name +
+                                 "' needs the camera that shot the plates ({camera=}FILE)");
         }
     }
     std::set<std::string> names;

@@ -315,11 +315,11 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
     }
     if (findings.empty())
     {
-        throw Exception("cannot tell the primaries of the base config's scene_linear space '" +
+        throw ParameterError("cannot tell the primaries of the base config's scene_linear space '" +
                         slName +
                         "': no interchange role, and no colour space of the config is a standard "
                         "encoding (linear, sRGB, gamma, BT.709) of standard primaries or CIE XYZ "
-                        "measured from it: give --working-space");
+                        "measured from it: give {working_space}");
     }
     // The most trusted evidence decides; anything as trusted must agree.
     const int best =
@@ -339,9 +339,9 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
         }
         else if (f.primaries != chosen->primaries)
         {
-            throw Exception("the base config's scene_linear space '" + slName +
+            throw ParameterError("the base config's scene_linear space '" + slName +
                             "' has conflicting evidence: " + chosen->evidence + "; but " +
-                            f.evidence + ": give --working-space");
+                            f.evidence + ": give {working_space}");
         }
     }
     return {chosen->primaries, chosen->evidence};

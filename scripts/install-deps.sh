@@ -14,6 +14,7 @@ packages=(
   glslang-tools libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   python3 python3-pyopencolorio
   pybind11-dev python3-dev python3-numpy python3-pytest python3-openimageio
+  libhwy-dev python3-dask python3-distributed
   blender
 )
 

@@ -60,3 +60,70 @@ std::string OneLine(const std::string& text, size_t maxBytes)
 }
 
 }  // namespace bandlight
+
+namespace bandlight
+{
+
+std::string SpellParameters(const std::string& messageTemplate, Face face)
+{
+    std::string out;
+    out.reserve(messageTemplate.size() + 16);
+    const size_t n = messageTemplate.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+        const char c = messageTemplate[i];
+        size_t end = i + 1;
+        while (c == '{' && end < n &&
+               ((messageTemplate[end] >= 'a' && messageTemplate[end] <= 'z') ||
+                messageTemplate[end] == '_'))
+        {
+            ++end;
+        }
+        const bool given = end < n && end > i + 1 && messageTemplate[end] == '=';
+        const size_t close = given ? end + 1 : end;
+        if (c != '{' || end == i + 1 || close >= n || messageTemplate[close] != '}')
+        {
+            out += c;
+            continue;
+        }
+        std::string name = messageTemplate.substr(i + 1, end - i - 1);
+        i = close;
+        switch (face)
+        {
+            case Face::CPP:
+                out += given ? name + " = " : name;
+                break;
+            case Face::COMMAND:
+                // The command calls the two lights --from and --to.
+                name = name == "src" ? "from" : name == "dst" ? "to" : name;
+                for (char& ch : name)
+                {
+                    ch = ch == '_' ? '-' : ch;
+                }
+                out += "--" + name + (given ? " " : "");
+                break;
+            case Face::PYTHON:
+                // A command's --no-X flag is Python's X=False.
+                if (name.rfind("no_", 0) == 0)
+                {
+                    out += name.substr(3) + "=False";
+                    break;
+                }
+                out += given ? name + "=" : name;
+                break;
+        }
+    }
+    return out;
+}
+
+ParameterError::ParameterError(const std::string& messageTemplate)
+    : Exception(SpellParameters(messageTemplate, Face::CPP)), m_template(messageTemplate)
+{
+}
+
+std::string ParameterError::spelled(Face face) const
+{
+    return SpellParameters(m_template, face);
+}
+
+}  // namespace bandlight

@@ -15,6 +15,36 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// How a face of bandlight spells a parameter in messages: the C++ API by
+/// its name (`camera`), the command as a flag (`--camera`), Python as a
+/// keyword (`camera=`).
+enum class Face
+{
+    CPP,
+    COMMAND,
+    PYTHON,
+};
+
+/// An Exception about parameters of a request. The message is a template in
+/// which `{name}` names a parameter (`{working_space}`: "--working-space" to
+/// the command, "working_space" to Python) and `{name=}` gives it a value
+/// (`{camera=}FILE`: "--camera FILE", "camera=FILE"); what() spells them as
+/// the C++ API does and spelled() as a face does, so library messages name
+/// the parameter, never a command-line flag.
+class ParameterError : public Exception
+{
+public:
+    explicit ParameterError(const std::string& messageTemplate);
+    /// The message with its parameters spelled as `face` spells them.
+    std::string spelled(Face face) const;
+
+private:
+    std::string m_template;
+};
+
+/// `messageTemplate` with its `{name}` parameters spelled as `face` spells them.
+std::string SpellParameters(const std::string& messageTemplate, Face face);
+
 /// `text` with line breaks and other control characters written as escapes
 /// ("\\n", "\\x01"), so that a value quoted from a file keeps a message on one line.
 std::string OneLine(const std::string& text);

@@ -200,8 +200,8 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
         methods.push_back(ParseMethod(m));
         if (methods.back().method == ChangeMethod::ROOTPOLY_CAMERA && !o.camera)
         {
-            throw Exception("method '" + m +
-                            "' needs the camera that shot the plates (--camera FILE)");
+            throw ParameterError("method '" + m +
+                                 "' needs the camera that shot the plates ({camera=}FILE)");
         }
     }
     // Remittances sampled once.

@@ -170,6 +170,13 @@ const std::vector<std::string>& AllMethodNames()
     return names;
 }
 
+std::string MethodSyntax()
+{
+    return "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
+           "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
+           "rootpoly3, rootpoly-camera (with {camera})";
+}
+
 std::string DescribeMethod(const MethodSpec& m)
 {
     switch (m.method)
@@ -425,8 +432,8 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
     {
         if (!method.camera)
         {
-            throw Exception("method '" + method.name +
-                            "' needs the camera that shot the plates (--camera FILE)");
+            throw ParameterError("method '" + method.name +
+                                 "' needs the camera that shot the plates ({camera=}FILE)");
         }
         // The plates: camera RGB balanced for `from` by gains, through one
         // IDT fitted for the daylight. Back through that IDT to the

@@ -90,6 +90,10 @@ const std::vector<std::string>& LinearMethodNames();
 /// band6, band6-wp, fit3x3, prefilter, metamer and upsample.
 const std::vector<std::string>& AllMethodNames();
 
+/// Every method name a user can give, as help text: "none, vonkries, ...,
+/// rootpoly-camera (with {camera})" (a ParameterError template).
+std::string MethodSyntax();
+
 /// One sentence on what a method does and how accurate it is, for look
 /// descriptions and --help.
 std::string DescribeMethod(const MethodSpec& method);

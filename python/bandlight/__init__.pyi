@@ -237,6 +237,39 @@ AccuracyRow = TypedDict("AccuracyRow", {
     "worst_sample": str,
 })
 
+
+class AccuracyCamera(TypedDict):
+    name: str
+    file: str
+    idt_light: str
+
+
+class AccuracyCost(TypedDict):
+    method: str
+    form: str
+    ns_per_pixel: float
+    mpixel_per_s: float
+    threads: int
+
+
+class AccuracySetupCost(TypedDict):
+    what: str
+    seconds: float
+
+
+class AccuracyDocument(TypedDict):
+    camera: Optional[AccuracyCamera]
+    rows: List[AccuracyRow]
+    cross_validation: List[AccuracyRow]
+    floor: List[AccuracyRow]
+    cost: List[AccuracyCost]
+    setup_cost: List[AccuracySetupCost]
+
+
+class ApplyResult(TypedDict):
+    applied: str
+    frames: int
+
 def config(out: Optional[StrPath] = None, *, working_space: Optional[str] = None,
            illuminants: Union[str, Sequence[LightLike]] = ("A", "C", "D65", "F2", "F11"),
            methods: Union[str, Sequence[str], None] = None, observer: ObserverLike = "1931",
@@ -256,11 +289,22 @@ def accuracy(illuminants: Union[str, Sequence[LightLike], None] = None,
              reflectances: Union[StrPath, Sequence[StrPath], Mapping[str, RemittancesLike], None] = None,
              default_sets: bool = True, working_space: str = "acescg",
              observer: ObserverLike = "1931", exposures: Optional[Sequence[float]] = None,
-             lut_size: int = 65, ideal_only: bool = False, cross_validation: bool = False,
-             floor: bool = False,
+             lut_size: int = 65, ideal_only: bool = False, cross_validation: bool = True,
+             floor: bool = True, cost: bool = True,
              progress: Optional[Callable[[float], None]] = None,
              plates: str = "both", adaptation: str = "cat02",
-             camera: Optional[StrPath] = None, camera_idt: str = "D55") -> List[AccuracyRow]: ...
+             camera: Optional[StrPath] = None, camera_idt: str = "D55",
+             json: Optional[StrPath] = None,
+             plot: Optional[StrPath] = None) -> AccuracyDocument: ...
+def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
+          look: Optional[str] = None, config: Optional[StrPath] = None,
+          colorspace: Optional[str] = None, src: Optional[LightLike] = None,
+          dst: Optional[LightLike] = None, method: str = "bradford",
+          working_space: str = "acescg", observer: ObserverLike = "1931",
+          training: Optional[RemittancesLike] = None,
+          plates: str = "balanced", adaptation: str = "cat02",
+          camera: Optional[StrPath] = None, camera_idt: str = "D55",
+          threads: int = 0) -> ApplyResult: ...
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
            mode: Optional[str] = None, threads: int = 0, unplanned: bool = False) -> Float32Array: ...
 def explain_scene(scene: Optional[StrPath] = None, *, text: Optional[str] = None,

@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "PyBandlight.h"
-#include "cli/Common.h"
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
 
@@ -49,18 +48,6 @@ std::string ShapeText(const py::array& a)
     return s.str();
 }
 
-/// What ResolveReflectances does for a file, for a Spectrum given from Python.
-void CheckRemittance(const NamedSpectrum& s, const std::string& source)
-{
-    CheckRemittanceMagnitude(s, source);
-    for (const std::string& note : {CoverageNote(s, source, true), RemittanceRangeNote(s, source)})
-    {
-        if (!note.empty())
-        {
-            Warn(note);
-        }
-    }
-}
 }  // namespace
 
 Light ToLight(const py::handle& arg)
@@ -74,23 +61,16 @@ Light ToLight(const py::handle& arg)
     if (py::isinstance<py::str>(arg))
     {
         const std::string text = arg.cast<std::string>();
-        const NamedSpectrum s =
-            !IsBuiltinIlluminant(text) && Exists(text)
-                ? ReadingFile(text, [&] { return cli::ResolveIlluminant(text); })
-                : cli::ResolveIlluminant(text);
-        return {s.name, s.spectrum};
+        return !IsBuiltinIlluminant(text) && Exists(text)
+                   ? ReadingFile(text, [&] { return jobs::ResolveIlluminant(text, Warnings()); })
+                   : jobs::ResolveIlluminant(text, Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, even one named like a built-in.
         const std::string path = FsPath(arg);
-        NamedSpectrum s = ReadingFile(path, [&] { return ReadSpectraFile(path).front(); });
-        s.spectrum = UsableIlluminant(s.spectrum, path);
-        if (const std::string note = CoverageNote(s, path, false); !note.empty())
-        {
-            Warn(note);
-        }
-        return {s.name, s.spectrum};
+        const NamedSpectrum s = ReadingFile(path, [&] { return ReadSpectraFile(path).front(); });
+        return jobs::CheckedIlluminant(s, path, Warnings());
     }
     throw py::type_error(
         "an illuminant is a name or file (str), a file (os.PathLike) or a "
@@ -103,7 +83,7 @@ std::vector<Light> ToLights(const py::handle& arg)
     std::vector<Light> lights;
     if (py::isinstance<py::str>(arg))
     {
-        for (const std::string& name : cli::SplitList(arg.cast<std::string>()))
+        for (const std::string& name : jobs::SplitList(arg.cast<std::string>()))
         {
             lights.push_back(ToLight(py::str(name)));
         }
@@ -133,14 +113,15 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
     if (py::isinstance<NamedSpectrum>(arg))
     {
         const NamedSpectrum& s = arg.cast<const NamedSpectrum&>();
-        CheckRemittance(s, "remittance '" + OneLine(s.name, 80) + "'");
+        jobs::CheckRemittance(s, "remittance '" + OneLine(s.name, 80) + "'", Warnings());
         return {s};
     }
     if (py::isinstance<py::str>(arg))
     {
         const std::string text = arg.cast<std::string>();
-        return Exists(text) ? ReadingFile(text, [&] { return cli::ResolveReflectances(text); })
-                            : cli::ResolveReflectances(text);
+        return Exists(text)
+                   ? ReadingFile(text, [&] { return jobs::ResolveReflectances(text, Warnings()); })
+                   : jobs::ResolveReflectances(text, Warnings());
     }
     if (IsPathLike(arg))
     {
@@ -151,7 +132,7 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
             ReadingFile(path, [&] { return ReadSpectraFile(path); });
         for (const NamedSpectrum& s : spectra)
         {
-            CheckRemittance(s, path);
+            jobs::CheckRemittance(s, path, Warnings());
         }
         return spectra;
     }
@@ -171,7 +152,7 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
                                  TypeName(item));
         }
         const NamedSpectrum& s = item.cast<const NamedSpectrum&>();
-        CheckRemittance(s, "remittance '" + OneLine(s.name, 80) + "'");
+        jobs::CheckRemittance(s, "remittance '" + OneLine(s.name, 80) + "'", Warnings());
         out.push_back(s);
     }
     if (out.empty())
@@ -191,13 +172,13 @@ plates: "balanced" (default: white-balanced to the working white, as every
 ACES IDT delivers them; neutrals stay neutral) or "lit" (carrying src's
 cast); adaptation: how they were balanced, "cat02" or "bradford"; camera:
 the camera sensitivities file (rawtoaces JSON, CSV, CGATS) rootpoly-camera
-needs, camera_idt: the light its one fixed IDT was fitted for (README
-"Plates"). The defaults are the command's.
+needs, camera_idt: the light its one fixed IDT was fitted for
+(docs/plates.md). The defaults are the command's.
 )doc";
 
-cli::PlatesOptions PlatesArgs::options() const
+jobs::PlatesRequest PlatesArgs::options() const
 {
-    cli::PlatesOptions o;
+    jobs::PlatesRequest o;
     o.plates = plates;
     o.adaptation = adaptation;
     o.idtLight = cameraIdt;
@@ -215,7 +196,7 @@ cli::PlatesOptions PlatesArgs::options() const
 
 std::shared_ptr<const SpectralCamera> PlatesArgs::loadCamera() const
 {
-    const cli::PlatesOptions o = options();
+    const jobs::PlatesRequest o = options();
     if (o.camera.empty())
     {
         return nullptr;
@@ -225,20 +206,10 @@ std::shared_ptr<const SpectralCamera> PlatesArgs::loadCamera() const
 
 MethodSpec ToMethod(const std::string& name, const py::handle& training, const PlatesArgs& plates)
 {
-    const cli::PlatesOptions o = plates.options();
+    const jobs::PlatesRequest o = plates.options();
     o.parsed();  // a bad convention or adaptation is refused before anything is read
-    MethodSpec method = o.apply(ParseMethod(name), plates.loadCamera());
-    if (!training.is_none())
-    {
-        if (method.method != ChangeMethod::FIT3X3 && method.method != ChangeMethod::ROOTPOLY)
-        {
-            throw Exception("method '" + method.name +
-                            "' is not fitted: training remittances are for fit3x3, rootpoly "
-                            "and rootpoly3");
-        }
-        method.training = ToReflectances(training);
-    }
-    return method;
+    MethodSpec method = o.apply(ParseMethod(name), plates.loadCamera(), Warnings());
+    return training.is_none() ? method : jobs::WithTraining(method, ToReflectances(training));
 }
 
 BandSet ToBands(const py::handle& arg)
@@ -283,8 +254,8 @@ int ToThreads(int threads)
 {
     if (threads < 0 || threads > kMaxThreads)
     {
-        throw Exception("threads must be 0 (all cores) to " + std::to_string(kMaxThreads) +
-                        ", got " + std::to_string(threads));
+        throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
+                             ", got " + std::to_string(threads));
     }
     return threads;
 }

@@ -133,6 +133,51 @@ void Warn(const std::string& note)
     }
 }
 
+PythonReporter::PythonReporter(py::object callback) : m_callback(std::move(callback)) {}
+
+void PythonReporter::note(const std::string& line)
+{
+    Warn(line);
+}
+
+void PythonReporter::progress(const std::string&, double fraction)
+{
+    if (fraction < 0.0)
+    {
+        return;
+    }
+    std::lock_guard<std::mutex> lock(m_mutex);
+    py::gil_scoped_acquire gil;
+    if (m_callback.is_none() || m_error)
+    {
+        return;
+    }
+    try
+    {
+        m_callback(fraction);
+    }
+    catch (py::error_already_set& e)
+    {
+        m_error = std::move(e);
+    }
+}
+
+void PythonReporter::raiseIfFailed()
+{
+    if (m_error)
+    {
+        py::error_already_set e = std::move(*m_error);
+        m_error.reset();
+        throw std::move(e);
+    }
+}
+
+jobs::Reporter& Warnings()
+{
+    static PythonReporter* warnings = new PythonReporter();  // never destroyed: holds py::none
+    return *warnings;
+}
+
 void AddErrors(py::module_& m)
 {
     g_noteWarning = PyErr_NewExceptionWithDoc(
@@ -163,6 +208,12 @@ void AddErrors(py::module_& m)
             catch (const FileError& e)
             {
                 RaiseOsError(e.error(), Message(e.what()));
+            }
+            catch (const ParameterError& e)
+            {
+                // The library names its parameters; Python spells them as keywords.
+                PyErr_SetString(PyExc_ValueError,
+                                Message(e.spelled(Face::PYTHON).c_str()).c_str());
             }
             catch (const Exception& e)
             {
@@ -199,7 +250,7 @@ PYBIND11_MODULE(_bandlight, m)
         "ValueError (bad names and values, malformed files: the message names the file and\n"
         "line) or OSError (files that cannot be read or written), with the message the\n"
         "``bandlight`` command prints.";
-    m.attr("__version__") = "0.1.0";
+    m.attr("__version__") = bandlight::defaults::VERSION;
 
     // Classes and functions say they live in `bandlight` (the package that
     // re-exports them), not in this extension's own name.
@@ -213,5 +264,6 @@ PYBIND11_MODULE(_bandlight, m)
     AddConfig(m);
     AddAccuracy(m);
     AddRender(m);
+    AddApply(m);
     m.attr("__name__") = ownName;
 }

@@ -2,12 +2,14 @@
 #pragma once
 
 // The Python module's shared pieces: one Add<Area>() per Py<Area>.cpp (as
-// PyOpenColorIO's bindings are organised), argument conversion that reads
-// and refuses input exactly as the `bandlight` command does, numpy helpers,
-// and the file-error boundary that makes OSError of what is an I/O failure.
+// PyOpenColorIO's bindings are organised), converters from Python values to
+// the jobs' requests (jobs/: the same library the command calls), numpy
+// helpers, the reporter that makes Python warnings of the jobs' notes, and
+// the file-error boundary that makes OSError of what is an I/O failure.
 
 #include <cerrno>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,7 +19,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "cli/Common.h"
+#include "jobs/Inputs.h"
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
@@ -42,6 +44,7 @@ void AddTransforms(py::module_& m);
 void AddConfig(py::module_& m);
 void AddAccuracy(py::module_& m);
 void AddRender(py::module_& m);
+void AddApply(py::module_& m);
 
 // ---------------------------------------------------------------------------
 // Errors (PyBandlight.cpp).
@@ -127,6 +130,28 @@ auto WritingFile(const std::string& path, bool folder, Fn&& fn) -> decltype(fn()
 /// Issues a bandlight.NoteWarning (what `bandlight` prints as "note: ...").
 void Warn(const std::string& note);
 
+/// The jobs' reporter for Python: each note a bandlight.NoteWarning (taking
+/// the GIL, so jobs may note from threads that released it), and progress
+/// fractions passed to `callback` (None: none). The first exception the
+/// callback raises stops further calls; raise() raises it after the job.
+class PythonReporter : public jobs::Reporter
+{
+public:
+    explicit PythonReporter(py::object callback = py::none());
+    void note(const std::string& line) override;
+    void progress(const std::string& line, double fraction) override;
+    /// Raises what the callback raised, if anything (call with the GIL held).
+    void raiseIfFailed();
+
+private:
+    py::object m_callback;
+    std::mutex m_mutex;
+    std::optional<py::error_already_set> m_error;
+};
+
+/// A PythonReporter without a callback, for the converters' notes.
+jobs::Reporter& Warnings();
+
 // ---------------------------------------------------------------------------
 // Arguments (PyArgs.cpp). Strings are read as the command reads its options.
 
@@ -160,8 +185,8 @@ struct PlatesArgs
     py::object camera = py::none();  ///< None, a file (str or os.PathLike)
     std::string cameraIdt = "D55";
 
-    /// The command's options for these arguments (the camera file's path).
-    cli::PlatesOptions options() const;
+    /// The request's plates for these arguments (the camera file's path).
+    jobs::PlatesRequest options() const;
     /// The camera read (nullptr for None); unreadable files raise OSError.
     std::shared_ptr<const SpectralCamera> loadCamera() const;
 };

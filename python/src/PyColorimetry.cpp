@@ -3,7 +3,7 @@
 // colour rendering, chromatic adaptation, RGB spaces — vectorised over
 // arrays of colours (..., 3) with the GIL released around the loops.
 #include "PyBandlight.h"
-#include "cli/Common.h"
+#include "jobs/ColourJobs.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/ColourRendering.h"
 
@@ -83,8 +83,8 @@ py::array_t<double> SurfaceRows(const XyzIntegrator& integrate, const Vec3& whit
         const Vec3 lab = XyzToLab(xyz, white);
         for (int c = 0; c < 3; ++c)
         {
-            cli::RequireFinite(xyz[c], "XYZ of '" + OneLine(samples[i].name, 80) + "'");
-            cli::RequireFinite(lab[c], "L*a*b* of '" + OneLine(samples[i].name, 80) + "'");
+            jobs::RequireFinite(xyz[c], "XYZ of '" + OneLine(samples[i].name, 80) + "'");
+            jobs::RequireFinite(lab[c], "L*a*b* of '" + OneLine(samples[i].name, 80) + "'");
             w(py::ssize_t(i), c) = xyz[c];
         }
     }
@@ -164,7 +164,7 @@ void AddColorimetry(py::module_& m)
             {
                 for (int c = 0; c < 3; ++c)
                 {
-                    cli::RequireFinite(integ.white[c], "XYZ of '" + integ.illuminant + "'");
+                    jobs::RequireFinite(integ.white[c], "XYZ of '" + integ.illuminant + "'");
                 }
                 return ToArray(integ.white);
             }
@@ -322,17 +322,10 @@ Floats for one colour (3,), arrays (...) for (..., 3).
         "cri",
         [](const py::object& illuminant)
         {
-            const Light l = ToLight(illuminant);
-            const ColourRendering cr = ComputeColourRendering(l.spectrum);
-            cli::RequireFinite(cr.cctK, "CCT");
-            cli::RequireFinite(cr.duv, "Duv");
-            cli::RequireFinite(cr.ra, "Ra");
-            for (size_t i = 0; i < cr.r.size(); ++i)
-            {
-                cli::RequireFinite(cr.r[i], "R" + std::to_string(i + 1));
-            }
+            const jobs::CriResult result = jobs::MakeCri(ToLight(illuminant));
+            const ColourRendering& cr = result.rendering;
             py::dict d;
-            d["illuminant"] = l.name;
+            d["illuminant"] = result.illuminant;
             d["cct_K"] = cr.cctK;
             d["duv"] = cr.duv;
             d["Ra"] = cr.ra;

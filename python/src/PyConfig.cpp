@@ -6,9 +6,8 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "PyBandlight.h"
-#include "cli/Common.h"
-#include "luts/LutWriter.h"
-#include "plugin/ConfigBuilder.h"
+#include "jobs/ConfigJob.h"
+#include "jobs/LutJob.h"
 #include "plugin/SceneLinearEvidence.h"
 
 namespace bandlight::python
@@ -22,7 +21,7 @@ std::vector<std::string> ToNames(const py::object& arg)
 {
     if (py::isinstance<py::str>(arg))
     {
-        return cli::SplitList(arg.cast<std::string>());
+        return jobs::SplitList(arg.cast<std::string>());
     }
     return CastTo<std::vector<std::string>>(arg, "methods", "a sequence of method names");
 }
@@ -35,7 +34,7 @@ OCIO::ConstConfigRcPtr ToConfig(const py::object& arg)
     {
         const std::string path =
             py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-        return ReadingFile(path, [&] { return cli::ReadConfigFile(path); });
+        return ReadingFile(path, [&] { return jobs::ReadConfigFile(path); });
     }
     return CastTo<OCIO::ConstConfigRcPtr>(arg, "a config",
                                           "a file (str, os.PathLike) or a PyOpenColorIO.Config");
@@ -48,57 +47,29 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
                          const std::string& adaptation, const py::object& camera,
                          const std::string& cameraIdt)
 {
-    const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
-    const cli::PlatesOptions platesOptions = platesArgs.options();
-    ConfigOptions options;
-    options.plates = platesOptions.parsed();
-    options.camera = platesArgs.loadCamera();
+    jobs::ConfigRequest r;
+    r.plates = PlatesArgs{plates, adaptation, camera, cameraIdt}.options();
+    r.plates.parsed();
+    r.observer = py::str(observer).cast<std::string>();
+    r.lights = ToLights(illuminants);
+    if (!methods.is_none())
     {
-        const NamedSpectrum idt = cli::ResolveIlluminant(cameraIdt);
-        options.idtLightName = idt.name;
-        options.idtLight = idt.spectrum;
+        r.methods = ToNames(methods);
     }
-    options.observer = ToObserver(observer);
-    options.lights = ToLights(illuminants);
-    options.methods = methods.is_none() ? LinearMethodNames() : ToNames(methods);
-    options.workingSpace = working ? *working : "acescg";
-    options.outputDir = out ? out->string() : "";
-    if (lutSize < 2 || lutSize > 129)
+    r.workingSpace = working.value_or("");
+    r.out = out ? out->string() : "";
+    r.lutSize = lutSize;
+    r.basePaths = basePaths;
+    if (!base.is_none())
     {
-        throw Exception("lut_size must be 2 to 129, got " + std::to_string(lutSize));
+        r.baseConfig = ToConfig(base);
     }
-    options.lutSize = lutSize;
-    if (basePaths != "relative" && basePaths != "absolute")
+    if (!r.plates.camera.empty())
     {
-        throw Exception("base_paths must be 'relative' or 'absolute', not '" +
-                        OneLine(basePaths, 80) + "'");
+        PlatesArgs{plates, adaptation, camera, cameraIdt}.loadCamera();  // OSError when unreadable
     }
-    options.absoluteBasePaths = basePaths == "absolute";
-
-    ConfigPackage package;
-    if (base.is_none())
-    {
-        package = BuildConfig(options);
-    }
-    else
-    {
-        const OCIO::ConstConfigRcPtr b = ToConfig(base);
-        package = ExtendConfig(b, options, !working.has_value());
-    }
-    if (out)
-    {
-        const std::string dir = out->string();
-        WritingFile(dir, true, [&] { WriteConfigPackage(package, dir); });
-        // Its LUT-file looks resolve from the folder they were written to.
-        package.config->setWorkingDir(dir.c_str());
-    }
-    else if (!package.lutFiles.empty())
-    {
-        throw Exception(std::to_string(package.lutFiles.size()) +
-                        " looks of this config are LUT files (upsample, rootpoly; every look of "
-                        "an OCIO v1 base): give out=DIR to write them with config.ocio");
-    }
-    return package.config;
+    const auto make = [&] { return jobs::MakeConfig(r, Warnings()); };
+    return (r.out.empty() ? make() : WritingFile(r.out, true, make)).package.config;
 }
 
 py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
@@ -107,56 +78,40 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
              const py::object& observerArg, const py::object& training, const std::string& plates,
              const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
 {
-    // What `bandlight lut` does (cli/CommandLut.cpp).
-    const std::string path = pathArg.string();
-    LutOptions options;
-    options.format = ParseLutFormat(format);
-    options.size = size.value_or(33);
-    options.forceLattice = size.has_value();
-    options.shaper = ShaperSpec::Parse(shaper);
-    const MethodSpec spec =
-        ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt});
-    const Light from = ToLight(src);
-    const Light to = ToLight(dst);
-    const RgbSpace& working = FindRgbSpace(workingName);
-    const Observer observer = ToObserver(observerArg);
-    LutFiles files;
+    jobs::LutRequest r;
+    r.out = pathArg.string();
+    r.format = format;
+    r.size = size;
+    r.shaper = shaper;
+    r.relight.plates = PlatesArgs{plates, adaptation, camera, cameraIdt}.options();
+    r.relight.plates.parsed();
+    r.relight.method = method;
+    if (!training.is_none())
+    {
+        r.relight.training = ToReflectances(training);
+    }
+    r.relight.src = ToLight(src);
+    r.relight.dst = ToLight(dst);
+    r.relight.workingSpace = workingName;
+    r.relight.observer = py::str(observerArg).cast<std::string>();
+    if (!r.relight.plates.camera.empty())
+    {
+        PlatesArgs{plates, adaptation, camera, cameraIdt}.loadCamera();  // OSError when unreadable
+    }
+    jobs::LutResult result;
     {
         py::gil_scoped_release release;
-        if (spec.isLinear())
-        {
-            const OCIO::GroupTransformRcPtr exact =
-                IlluminantChangeTransform(from, to, spec, working, observer);
-            files = WritingFile(path, false, [&] { return WriteLut(exact, true, options, path); });
-        }
-        else
-        {
-            // Baked straight from the per-pixel fit, not from a lattice.
-            const auto relighter = std::make_shared<Relighter>(from, to, spec, working, observer);
-            if (options.shaper.kind == ShaperSpec::Kind::LOG2)
-            {
-                options.shaper = ShaperSpec::ForNonLinear();
-            }
-            options.description = "Relight from " + from.name + " to " + to.name + " in " +
-                                  working.displayName + ". " + DescribeMethod(spec) + " " +
-                                  spec.plates.describe(working.displayName);
-            files = WritingFile(path, false,
-                                [&]
-                                {
-                                    return WriteLut([relighter](float* rgb, size_t n)
-                                                    { relighter->apply(rgb, n); },
-                                                    options, path);
-                                });
-        }
+        result = WritingFile(r.out, false, [&] { return jobs::MakeLut(r, Warnings()); });
     }
     py::dict d;
-    d["lut"] = files.lut;
-    d["shaper"] = files.shaper.empty() ? py::object(py::none()) : py::str(files.shaper);
-    d["lattice"] = files.lattice;
-    d["output_encoded"] = files.outputEncoded;
-    d["shaper_description"] =
-        files.lattice ? py::object(py::str(options.shaper.alignedTo(options.size).describe()))
-                      : py::object(py::none());
+    d["lut"] = result.files.lut;
+    d["shaper"] =
+        result.files.shaper.empty() ? py::object(py::none()) : py::str(result.files.shaper);
+    d["lattice"] = result.files.lattice;
+    d["output_encoded"] = result.files.outputEncoded;
+    d["shaper_description"] = result.files.lattice
+                                  ? py::object(py::str(result.shaper.describe()))
+                                  : py::object(py::none());
     return d;
 }
 }  // namespace
@@ -165,11 +120,11 @@ void AddConfig(py::module_& m)
 {
     m.def("config", &Config, py::arg("out") = py::none(), py::kw_only(),
           py::arg("working_space") = py::none(),
-          py::arg("illuminants") = py::make_tuple("A", "C", "D65", "F2", "F11"),
-          py::arg("methods") = py::none(), py::arg("observer") = "1931", py::arg("lut_size") = 65,
-          py::arg("base") = py::none(), py::arg("base_paths") = "relative",
-          py::arg("plates") = "balanced", py::arg("adaptation") = "cat02",
-          py::arg("camera") = py::none(), py::arg("camera_idt") = "D55",
+          py::arg("illuminants") = py::tuple(py::cast(jobs::SplitList(defaults::CONFIG_ILLUMINANTS))),
+          py::arg("methods") = py::none(), py::arg("observer") = defaults::OBSERVER, py::arg("lut_size") = defaults::CONFIG_LUT_SIZE,
+          py::arg("base") = py::none(), py::arg("base_paths") = defaults::BASE_PATHS,
+          py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
+          py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
           (std::string(R"doc(
 An OCIO v2 config with one look per ordered pair of illuminants and method
 (``<method>_<FROM>_to_<TO>``, and the same as named transforms
@@ -204,12 +159,13 @@ out or "absolute".
 ``bandlight config --base`` does. config: a file or a PyOpenColorIO.Config.
 )doc");
     m.def("lut", &Lut, py::arg("path"), py::arg("src"), py::arg("dst"),
-          py::arg("method") = "bradford", py::kw_only(), py::arg("format") = "clf",
-          py::arg("size") = py::none(), py::arg("shaper") = "log2",
-          py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-          py::arg("training") = py::none(), py::arg("plates") = "balanced",
-          py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-          py::arg("camera_idt") = "D55",
+          py::arg("method") = defaults::METHOD, py::kw_only(),
+          py::arg("format") = defaults::LUT_FORMAT, py::arg("size") = py::none(),
+          py::arg("shaper") = defaults::LUT_SHAPER,
+          py::arg("working_space") = defaults::WORKING_SPACE,
+          py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
+          py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
+          py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
           (std::string(R"doc(
 Writes the illuminant change from src to dst as a LUT file, as ``bandlight
 lut`` does, through OpenColorIO's own writers. Returns {"lut": path,

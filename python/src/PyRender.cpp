@@ -2,7 +2,7 @@
 // Scenes: a YAML scene (a file or text) rendered to a numpy image, as
 // `bandlight render` renders it, and the planner's account of it.
 #include "PyBandlight.h"
-#include "render/SceneFile.h"
+#include "jobs/RenderJob.h"
 #include "render/ScenePlan.h"
 #include "render/SceneRenderer.h"
 
@@ -12,30 +12,13 @@ namespace bandlight::python
 namespace
 {
 /// The scene from a file or from text, with the mode override applied as
-/// `bandlight render --mode` applies it.
+/// `bandlight render --mode` applies it (jobs::LoadScene).
 Scene LoadScene(const std::optional<Path>& path, const std::optional<std::string>& text,
                 const std::string& source, const std::optional<std::string>& mode)
 {
-    if (path.has_value() == text.has_value())
-    {
-        throw Exception("give a scene file or text=YAML, one of the two");
-    }
-    const std::string name = path ? path->string() : source;
-    Scene scene = path ? ReadingFile(name, [&] { return ReadSceneFile(name); })
-                       : ReadSceneText(*text, source);
-    if (mode)
-    {
-        if (ModeBandCount(*mode) == 0 && scene.settings.output == "bands")
-        {
-            // Band values exist only in band mode (the command's rule).
-            throw Exception("mode '" + OneLine(*mode, 80) + "': " + name +
-                            " asks for output 'bands' (band values), which only band mode "
-                            "writes; set render: {output: acescg} (or another working space) to "
-                            "render it spectrally");
-        }
-        SetRenderMode(scene.settings, *mode);
-    }
-    return scene;
+    const std::string file = path ? path->string() : "";
+    return path ? ReadingFile(file, [&] { return jobs::LoadScene(file, text, source, mode); })
+                : jobs::LoadScene(file, text, source, mode);
 }
 
 /// The image as (height, width, channels) float32, owning the renderer's

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "PyBandlight.h"
-#include "cli/Common.h"
 #include "spectral/Illuminants.h"
 
 namespace bandlight::python

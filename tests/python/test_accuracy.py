@@ -34,43 +34,69 @@ def assert_same_rows(py_rows, by_cli):
 
 
 def test_accuracy_rows_equal_the_commands():
-    py_rows = bandlight.accuracy(["A", "F11"], ["bradford", "band3", "metamer"], ideal_only=True)
+    doc = bandlight.accuracy(["A", "F11"], ["bradford", "band3", "metamer"], ideal_only=True,
+                             cost=False)
     by_cli = cli_rows("--illuminants", "A,F11", "--methods", "bradford,band3,metamer",
                       "--ideal-only")
-    rows = by_cli["rows"]
+    assert list(doc) == list(by_cli) == ["camera", "rows", "cross_validation", "floor", "cost",
+                                         "setup_cost"]
+    py_rows, rows = doc["rows"], by_cli["rows"]
     assert_same_rows(py_rows, rows)
-    # The command adds its spectral reference; otherwise the same rows.
-    assert len(py_rows) == len([r for r in rows if r["method"] != "spectral"])
+    # The same rows, the spectral reference's included.
+    assert len(py_rows) == len(rows)
+    assert "spectral" in {r["method"] for r in py_rows}
+    assert_same_rows(doc["floor"], by_cli["floor"])
+    assert doc["camera"] is None and doc["cost"] == [] and doc["setup_cost"] == []
     assert {r["set"] for r in py_rows} == {"tcs", "tcs09-15", "random"}
     # Every linear method is exposure invariant: the same figure at every k.
     by_k = {}
     for r in py_rows:
         by_k.setdefault(key({**r, "exposure": 0}), set()).add(round(r["mean"], 9))
     assert all(len(v) == 1 for v in by_k.values())
-    # band3 is worse than bradford on average (README's table).
+    # band3 is worse than bradford on average (docs/accuracy.md's table).
     mean = lambda m: sum(r["mean"] for r in py_rows if r["method"] == m) / 2  # noqa: E731
     assert mean("band3") > mean("bradford")
+
+
+def test_accuracy_document_equals_the_commands_with_costs(tmp_path):
+    # The call the two faces share, costs included: the same rows to 1e-9,
+    # and a cost row for every method, form and thread count the command times.
+    doc = bandlight.accuracy(illuminants=["A", "D65"], methods=["bradford", "rootpoly"])
+    out = tmp_path / "accuracy.json"
+    run_cli("accuracy", "--illuminants", "A,D65", "--methods", "bradford,rootpoly",
+            "--json", out)
+    by_cli = json.loads(out.read_text())
+    for part in ("rows", "cross_validation", "floor"):
+        assert len(doc[part]) == len(by_cli[part]), part
+        assert_same_rows(doc[part], by_cli[part])
+    timed = lambda d: sorted((c["method"], c["form"], c["threads"]) for c in d["cost"])  # noqa
+    assert timed(doc) == timed(by_cli) and len(timed(doc)) >= 6
+    assert [s["what"] for s in doc["setup_cost"]] == [s["what"] for s in by_cli["setup_cost"]]
+    assert all(c["ns_per_pixel"] > 0 for c in doc["cost"])
 
 
 def test_shipped_forms_cross_validation_and_floor(tmp_path):
     extra = tmp_path / "mine.csv"
     extra.write_text((SCENES / "counterexample_surface.csv").read_text())
     kwargs = dict(illuminants="A,D65", methods=["bradford", "fit3x3"], lut_size=9,
-                  reflectances=[extra], exposures=[0.25, 1.0], cross_validation=True,
-                  floor=True)
+                  reflectances=[extra], exposures=[0.25, 1.0], cost=False)
     calls = []
-    py_rows = bandlight.accuracy(**kwargs, progress=calls.append)
+    doc = bandlight.accuracy(**kwargs, progress=calls.append)
+    py_rows = doc["rows"]
     assert calls and calls[-1] == pytest.approx(1.0)
     assert {r["shipped"] for r in py_rows} == {False, True}
     assert str(extra) in {r["set"] for r in py_rows}
     by_cli = cli_rows("--illuminants", "A,D65", "--methods", "bradford,fit3x3",
                       "--lut-size", "9", "--reflectances", extra)
-    measured = [r for r in py_rows if r["exposure"] in (0.25, 1.0)
-                and not r["set"].startswith("training") and not r["method"].startswith("floor")]
+    measured = [r for r in py_rows if r["exposure"] in (0.25, 1.0)]
     assert_same_rows(measured, by_cli["rows"])
-    assert_same_rows([r for r in py_rows if r["set"].startswith("training")],
-                     by_cli["cross_validation"])
-    assert_same_rows([r for r in py_rows if r["method"].startswith("floor")], by_cli["floor"])
+    assert_same_rows(doc["cross_validation"], by_cli["cross_validation"])
+    assert_same_rows(doc["floor"], by_cli["floor"])
+    # The document and the plot are written as the command writes them.
+    bandlight.accuracy(**{**kwargs, "cost": True}, ideal_only=True, cross_validation=False,
+                       floor=False, json=tmp_path / "a.json", plot=tmp_path / "a.svg")
+    assert json.loads((tmp_path / "a.json").read_text())["rows"]
+    assert (tmp_path / "a.svg").read_text().lstrip().startswith("<?xml")
 
 
 def test_accuracy_errors_and_progress_exceptions():
@@ -85,4 +111,4 @@ def test_accuracy_errors_and_progress_exceptions():
     with pytest.raises(KeyboardInterrupt, match="stop"):
         bandlight.accuracy(["A", "D65"], ["none"], ideal_only=True, default_sets=False,
                            reflectances={"few": bandlight.reflectances("TCS")[:3]},
-                           progress=stop)
+                           cost=False, progress=stop)

@@ -14,7 +14,8 @@ STUB = pathlib.Path(bandlight.__file__).with_name("__init__.pyi")
 # Names only the stubs have: type aliases and TypedDicts of the results.
 STUB_ONLY = {"FloatArray", "Float32Array", "StrPath", "LightLike", "RemittancesLike",
              "BandsLike", "ObserverLike", "CriResult", "RgbSpaceInfo", "LutResult",
-             "AccuracyRow"}
+             "AccuracyRow", "AccuracyCamera", "AccuracyCost", "AccuracySetupCost",
+             "AccuracyDocument", "ApplyResult"}
 
 
 def stub_tree():

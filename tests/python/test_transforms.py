@@ -281,8 +281,9 @@ def test_rootpoly_camera_with_a_camera_file(tmp_path):
     r = bandlight.Relighter("A", "D65", "rootpoly-camera", camera=camera)
     grey = np.full((4, 3), 0.18, dtype=np.float32)
     np.testing.assert_allclose(r.apply(grey), grey, rtol=1e-5)
-    rows = bandlight.accuracy(["A", "D65"], ["rootpoly", "rootpoly-camera"], ideal_only=True,
-                              exposures=[1.0], plates="balanced", camera=camera)
-    sources = {(row["method"], row["camera"]) for row in rows}
+    doc = bandlight.accuracy(["A", "D65"], ["rootpoly", "rootpoly-camera"], ideal_only=True,
+                             exposures=[1.0], plates="balanced", camera=camera, cost=False)
+    assert doc["camera"]["file"] == str(camera) and doc["camera"]["idt_light"] == "D55"
+    sources = {(row["method"], row["camera"]) for row in doc["rows"]}
     assert ("rootpoly-camera", "camera-daylight-idt") in sources
     assert ("rootpoly", "camera") in sources

@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The accuracy job: the measurement, its JSON document and its plot.
+#include "jobs/AccuracyJob.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "jobs/Gnuplot.h"
+#include "jobs/detail/AccuracySummary.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+namespace OCIO = OCIO_NAMESPACE;
+using namespace detail;
+
+/// Accuracy (the held-out test colours, as shipped, at the worst exposure,
+/// first plate convention) against cost, with the Pareto front joined.
+void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outputs)
+{
+    const AccuracyOptions& options = result.options;
+    const std::string setName = HeldOutTcs().name;
+    const std::string key = options.plates.front().key();
+    const bool anyShipped = bool(options.shipped);
+    struct Point
+    {
+        std::string name;
+        double ns, de;
+    };
+    std::vector<Point> pts;
+    const bool hasSet = std::any_of(options.sets.begin(), options.sets.end(),
+                                    [&](const ReflectanceSet& s) { return s.name == setName; });
+    for (const std::string& m : hasSet ? options.methods : std::vector<std::string>{})
+    {
+        if (m == "rootpoly-camera" || m == "rootpoly3-camera" ||
+            !result.costAllThreads.count(m))
+        {
+            continue;
+        }
+        const Filter shippedF{1.0, anyShipped && m != "spectral", key, "cie"};
+        const auto worst = WorstExposure(result.rows, m, setName, shippedF, options.exposures);
+        pts.push_back({m, std::max(result.costAllThreads.at(m), 1e-3), worst.second});
+    }
+    std::sort(pts.begin(), pts.end(),
+              [](const Point& a, const Point& b)
+              { return a.ns < b.ns || (a.ns == b.ns && a.de < b.de); });
+    // Labels of methods at the same cost alternate right and left of their points.
+    std::ostringstream data;
+    for (size_t i = 0; i < pts.size(); ++i)
+    {
+        size_t rank = 0;
+        for (size_t k = 0; k < i; ++k)
+        {
+            rank += pts[k].ns == pts[i].ns ? 1 : 0;
+        }
+        data << pts[i].ns << " " << pts[i].de << " " << GnuplotDataLabel(pts[i].name) << " "
+             << (rank % 2 ? -1 : 1) << "\n";
+    }
+    data << "\n\n";
+    double best = 1e30;
+    for (const Point& p : pts)
+    {
+        if (p.de < best)
+        {
+            best = p.de;
+            data << p.ns << " " << p.de << "\n";
+        }
+    }
+    const std::string script = "set title " +
+                               GnuplotQuote("What accuracy costs: re-lighting " + setName +
+                                            ", as shipped, at its worst exposure (2^-8 ... 2^4), "
+                                            "mean over every illuminant pair") +
+                               "\n"
+                               "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
+                               "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
+                               "set logscale x\nset grid\nset key top right\nset yrange [0:*]\n"
+                               "set offsets graph 0.1, graph 0.1, graph 0.08, 0\n"
+                               "plot $bandlight_data index 1 using 1:2 with lines lw 2 lc rgb "
+                               "'#2a7ab0' title 'Pareto front', \\\n"
+                               "     $bandlight_data index 0 using 1:2 with points pt 7 ps 1.4 lc "
+                               "rgb '#c0392b' notitle, \\\n"
+                               "     $bandlight_data index 0 using 1:($4 > 0 ? $2 : 1/0):3 with "
+                               "labels left offset char 1,0 "
+                               "font ',10' notitle, \\\n"
+                               "     $bandlight_data index 0 using 1:($4 < 0 ? $2 : 1/0):3 with "
+                               "labels right offset char -1,0 "
+                               "font ',10' notitle\n";
+    RunGnuplot(script, data.str(), path, &outputs);
+}
+
+/// Each method's cost as one would apply it to an image (all threads): its
+/// OCIO form, and the per-pixel computation for spectral. Every 3×3 costs
+/// the same — one matrix per pixel, bound by memory — so the 3×3 methods
+/// share the median of their timings rather than their noise.
+std::map<std::string, double> CostAllThreads(const std::vector<CostRow>& cost)
+{
+    std::map<std::string, double> costAll;
+    std::vector<double> matrixCosts;
+    const int allThreads = int(std::max(1u, std::thread::hardware_concurrency()));
+    for (const CostRow& c : cost)
+    {
+        if (c.threads == allThreads && c.form != "direct-fit" && c.form != "native")
+        {
+            costAll[c.method] = c.nsPerPixel;
+            if (c.form == "ocio-matrix")
+            {
+                matrixCosts.push_back(c.nsPerPixel);
+            }
+        }
+    }
+    for (auto& [method, ns] : costAll)
+    {
+        if (ParseMethod(method).isLinear() && !matrixCosts.empty())
+        {
+            ns = Percentile(matrixCosts, 0.5);
+        }
+    }
+    return costAll;
+}
+}  // namespace
+
+ReflectanceSet ReflectanceSetFromFile(const std::string& path)
+{
+    return {path, ReadSpectraFile(path)};
+}
+
+AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
+{
+    AccuracyResult result;
+    AccuracyOptions& options = result.options;
+    options = DefaultAccuracyOptions();
+    options.workingSpace = r.workingSpace;
+    FindRgbSpace(r.workingSpace);
+    options.observer = ParseObserver(r.observer);
+    if (!r.lights.empty())
+    {
+        options.lights = r.lights;
+        if (options.lights.size() < 2)
+        {
+            throw Exception("accuracy needs at least two illuminants");
+        }
+    }
+    if (!r.methods.empty())
+    {
+        options.methods = r.methods;
+    }
+    options.plates = r.plates.all();
+    options.camera = r.plates.loadCamera();
+    result.cameraFile = r.plates.camera;
+    if (options.camera)
+    {
+        const Light idt = r.plates.idt(reporter);
+        options.idtLightName = idt.name;
+        options.idtLight = idt.spectrum;
+        if (r.methods.empty())
+        {
+            options.methods.push_back("rootpoly-camera");
+        }
+    }
+    if (std::find(options.methods.begin(), options.methods.end(), "spectral") ==
+        options.methods.end())
+    {
+        options.methods.push_back("spectral");
+    }
+    for (const std::string& m : options.methods)
+    {
+        const MethodSpec spec = ParseMethod(m);
+        if (spec.method == ChangeMethod::ROOTPOLY_CAMERA && !options.camera)
+        {
+            throw ParameterError("method '" + spec.name +
+                                 "' needs the camera that shot the plates ({camera=}FILE)");
+        }
+    }
+    if (!r.defaultSets)
+    {
+        options.sets.clear();
+    }
+    for (const ReflectanceSet& s : r.sets)
+    {
+        options.sets.push_back(s);
+    }
+    if (options.sets.empty())
+    {
+        throw ParameterError(
+            "no reflectance sets to measure: give {reflectances}, or keep the default sets");
+    }
+    if (!r.exposures.empty())
+    {
+        for (const double k : r.exposures)
+        {
+            if (!(k > 0.0) || !std::isfinite(k))
+            {
+                throw ParameterError("{exposures} must be positive and finite");
+            }
+        }
+        options.exposures = r.exposures;
+    }
+    const int lutSize = CheckedLutSize(r.lutSize, "lut_size");
+    if (!r.plot.empty() && !r.cost)
+    {
+        throw ParameterError("{plot} needs the cost measurement (drop {no_cost})");
+    }
+    if (!r.idealOnly)
+    {
+        // The shipped form: the OCIO processor of the transform a config's
+        // look holds (guard + matrix, or shaper + 3D LUT + inverse shaper).
+        const RgbSpace& working = FindRgbSpace(options.workingSpace);
+        const Observer observer = options.observer;
+        options.shipped = [&working, observer, lutSize](const Light& from, const Light& to,
+                                                        const MethodSpec& method) -> PixelBatch
+        {
+            const OCIO::ConstCPUProcessorRcPtr cpu =
+                OCIO::Config::CreateRaw()
+                    ->getProcessor(
+                        IlluminantChangeTransform(from, to, method, working, observer, lutSize))
+                    ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                               OCIO::OPTIMIZATION_DEFAULT);
+            return [cpu](float* rgb, size_t n)
+            {
+                OCIO::PackedImageDesc desc(rgb, long(n), 1, 3);
+                cpu->apply(desc);
+            };
+        };
+    }
+
+    const size_t pairs = options.lights.size() * (options.lights.size() - 1);
+    reporter.progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
+                      std::to_string(pairs) + " illuminant pairs x " +
+                      std::to_string(options.sets.size()) + " reflectance sets");
+    std::mutex mu;
+    int lastTenth = -1;
+    result.rows = MeasureAccuracy(
+        options,
+        [&](double f)
+        {
+            std::lock_guard<std::mutex> lock(mu);
+            const int tenth = int(f * 10.0);
+            std::string line;
+            if (tenth != lastTenth)
+            {
+                lastTenth = tenth;
+                line = "accuracy: " + std::to_string(int(f * 100.0 + 0.5)) + "% of pairs done";
+            }
+            reporter.progress(line, f);
+        });
+    if (r.crossValidation || r.floor)
+    {
+        reporter.progress("accuracy: cross-validating the fitted methods and fitting the floor");
+    }
+    if (r.crossValidation)
+    {
+        result.crossValidation = CrossValidate(options, 5);
+    }
+    if (r.floor)
+    {
+        result.floor = MeasureFloor(options);
+    }
+    if (r.cost)
+    {
+        reporter.progress("accuracy: timing each method on 1920x1080 float RGBA");
+        result.cost = MeasureCost(options.methods, options.workingSpace, 1920L * 1080L,
+                                  options.camera, {options.idtLightName, options.idtLight});
+        result.setupCost = MeasureSetupCost(options.workingSpace);
+    }
+    result.costAllThreads = CostAllThreads(result.cost);
+
+    // The JSON file and the plot are one set of outputs.
+    OutputSet outputs;
+    if (!r.json.empty())
+    {
+        const std::string document = AccuracyDocument(result);
+        outputs.write(r.json, [&](std::ostream& os) { os << document << "\n"; });
+        result.written.push_back(r.json);
+    }
+    if (!r.plot.empty())
+    {
+        Plot(r.plot, result, outputs);
+        result.written.push_back(r.plot);
+    }
+    outputs.commit();
+    return result;
+}
+
+std::string AccuracyDocument(const AccuracyResult& result)
+{
+    const AccuracyOptions& options = result.options;
+    nlohmann::ordered_json j;
+    const auto toJson = [](const std::vector<AccuracyRow>& from)
+    {
+        nlohmann::ordered_json a = nlohmann::ordered_json::array();
+        for (const AccuracyRow& r : from)
+        {
+            a.push_back({{"method", r.method},
+                         {"from", r.from},
+                         {"to", r.to},
+                         {"set", r.set},
+                         {"plates", r.plates},
+                         {"camera", r.source},
+                         {"exposure", r.exposure},
+                         {"shipped", r.shipped},
+                         {"mean", r.mean},
+                         {"p95", r.p95},
+                         {"max", r.max},
+                         {"worst_sample", r.worstSample}});
+        }
+        return a;
+    };
+    if (options.camera)
+    {
+        j["camera"] = {{"name", options.camera->name()},
+                       {"file", result.cameraFile},
+                       {"idt_light", options.idtLightName}};
+    }
+    else
+    {
+        j["camera"] = nullptr;
+    }
+    j["rows"] = toJson(result.rows);
+    j["cross_validation"] = toJson(result.crossValidation);
+    j["floor"] = toJson(result.floor);
+    j["cost"] = nlohmann::ordered_json::array();
+    for (const CostRow& c : result.cost)
+    {
+        j["cost"].push_back({{"method", c.method},
+                             {"form", c.form},
+                             {"ns_per_pixel", c.nsPerPixel},
+                             {"mpixel_per_s", 1e3 / c.nsPerPixel},
+                             {"threads", c.threads}});
+    }
+    j["setup_cost"] = nlohmann::ordered_json::array();
+    for (const SetupCost& s : result.setupCost)
+    {
+        j["setup_cost"].push_back({{"what", s.what}, {"seconds", s.seconds}});
+    }
+    return j.dump(2);
+}
+
+}  // namespace bandlight::jobs

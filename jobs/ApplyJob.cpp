@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/ApplyJob.h"
+
+#include <functional>
+#include <memory>
+
+#include "jobs/Frames.h"
+#include "jobs/ImageApply.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
+
+namespace bandlight::jobs
+{
+
+ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
+{
+    if (r.threads < 0 || r.threads > kMaxThreads)
+    {
+        throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
+                             ", got " + std::to_string(r.threads));
+    }
+    ApplyResult result;
+    OCIO::ConstProcessorRcPtr processor;
+    // rootpoly without a config is applied natively: a few ns a pixel, no
+    // LUT between the fit and the pixels.
+    std::function<void(float*, size_t)> native;
+    if (!r.look.empty())
+    {
+        if (r.config.empty())
+        {
+            throw ParameterError("{look} needs {config=}DIR (or use {src}/{dst}/{method})");
+        }
+        OCIO::ConstConfigRcPtr config = LoadConfig(r.config);
+        if (!config->getLook(r.look.c_str()))
+        {
+            throw Exception("look '" + r.look + "' is not in " + r.config);
+        }
+        const std::string space =
+            r.colorspace.empty() ? std::string(OCIO::ROLE_SCENE_LINEAR) : r.colorspace;
+        if (!config->getColorSpace(space.c_str()))
+        {
+            throw Exception("colour space '" + space + "' is not in " + r.config);
+        }
+        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+        t->setSrc(space.c_str());
+        t->setDst(space.c_str());
+        t->setLooks(r.look.c_str());
+        processor = config->getProcessor(t);
+        result.applied = "look " + r.look;
+    }
+    else
+    {
+        if (!r.relight)
+        {
+            throw ParameterError(
+                "give {look=}NAME {config=}DIR, or {src=}S1 {dst=}S2 [{method=}M]");
+        }
+        const RelightRequest& relight = *r.relight;
+        const MethodSpec method = relight.methodSpec(reporter);
+        const Observer observer = ParseObserver(relight.observer);
+        if (method.method == ChangeMethod::ROOTPOLY ||
+            method.method == ChangeMethod::ROOTPOLY_CAMERA)
+        {
+            const auto relighter = std::make_shared<Relighter>(
+                relight.src, relight.dst, method, relight.working(), observer);
+            native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
+            result.applied =
+                LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
+        }
+        else
+        {
+            OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
+                relight.src, relight.dst, method, relight.working(), observer);
+            processor = OCIO::Config::CreateRaw()->getProcessor(t);
+            result.applied = t->getFormatMetadata().getName();
+        }
+    }
+    const auto applyOne = [&](const std::string& in, const std::string& out)
+    {
+        if (native)
+        {
+            ApplyToImage(native, in, out, r.threads, result.applied);
+        }
+        else
+        {
+            ApplyToImage(processor->getOptimizedCPUProcessor(
+                             OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT),
+                         in, out, r.threads, result.applied);
+        }
+    };
+
+    if (r.frames.empty())
+    {
+        if (HasFramePattern(r.input))
+        {
+            throw ParameterError("'" + r.input + "' is a frame pattern: give {frames=}FIRST-LAST");
+        }
+        applyOne(r.input, r.output);
+        result.frames = 1;
+        return result;
+    }
+    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
+    {
+        throw ParameterError(
+            "{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+    }
+    const std::vector<int> frames = ParseFrameRange(r.frames);
+    for (const int f : frames)
+    {
+        applyOne(ExpandFramePattern(r.input, f), ExpandFramePattern(r.output, f));
+    }
+    result.frames = frames.size();
+    result.sequence = true;
+    return result;
+}
+
+}  // namespace bandlight::jobs

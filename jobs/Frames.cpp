@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/Frames.h"
+
+#include <cctype>
+#include <cstdio>
+
+#include "spectral/Exception.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+/// A printf-style frame field "%d", "%4d" or "%04d" in a pattern: where it
+/// starts, how long it is and its width. Scanned by hand (no regex: a
+/// recursive matcher overflows the stack on long names).
+struct PrintfField
+{
+    size_t pos = std::string::npos;
+    size_t length = 0;
+    int width = 1;
+};
+
+PrintfField FindPrintfField(const std::string& pattern)
+{
+    for (size_t i = pattern.find('%'); i != std::string::npos; i = pattern.find('%', i + 1))
+    {
+        size_t j = i + 1;
+        while (j < pattern.size() && pattern[j] >= '0' && pattern[j] <= '9')
+        {
+            ++j;
+        }
+        if (j < pattern.size() && pattern[j] == 'd')
+        {
+            PrintfField f{i, j + 1 - i, 1};
+            const std::string digits = pattern.substr(i + 1, j - i - 1);
+            const size_t first = digits.find_first_not_of('0');
+            const std::string value = first == std::string::npos ? "" : digits.substr(first);
+            if (value.size() > 2 || (!value.empty() && std::stoi(value) > kMaxFrameWidth))
+            {
+                throw Exception("frame pattern '" + OneLine(pattern, 80) +
+                                "': the frame number's width is at most " +
+                                std::to_string(kMaxFrameWidth) + " digits");
+            }
+            f.width = value.empty() ? 1 : std::stoi(value);
+            return f;
+        }
+    }
+    return {};
+}
+
+/// Parses an optionally signed decimal integer of at most 9 digits at
+/// text[i...], skipping spaces before it; advances i. False when absent.
+bool ParseFrameNumber(const std::string& text, size_t& i, long& value)
+{
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    {
+        ++i;
+    }
+    const bool negative = i < text.size() && text[i] == '-';
+    size_t j = i + (negative ? 1 : 0);
+    const size_t digitsStart = j;
+    value = 0;
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9')
+    {
+        if (j - digitsStart >= 9)
+        {
+            return false;
+        }
+        value = value * 10 + (text[j] - '0');
+        ++j;
+    }
+    if (j == digitsStart)
+    {
+        return false;
+    }
+    value = negative ? -value : value;
+    i = j;
+    return true;
+}
+}  // namespace
+
+bool HasFramePattern(const std::string& pattern)
+{
+    return pattern.find('#') != std::string::npos ||
+           FindPrintfField(pattern).pos != std::string::npos;
+}
+
+std::string ExpandFramePattern(const std::string& pattern, int frame)
+{
+    const size_t hash = pattern.find('#');
+    if (hash != std::string::npos)
+    {
+        size_t end = hash;
+        while (end < pattern.size() && pattern[end] == '#')
+        {
+            ++end;
+        }
+        if (end - hash > size_t(kMaxFrameWidth))
+        {
+            throw Exception("frame pattern '" + OneLine(pattern, 80) +
+                            "': the frame number's width is at most " +
+                            std::to_string(kMaxFrameWidth) + " digits");
+        }
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%0*d", int(end - hash), frame);
+        return pattern.substr(0, hash) + buf + pattern.substr(end);
+    }
+    const PrintfField f = FindPrintfField(pattern);
+    if (f.pos != std::string::npos)
+    {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%0*d", f.width, frame);
+        return pattern.substr(0, f.pos) + buf + pattern.substr(f.pos + f.length);
+    }
+    return pattern;
+}
+
+std::vector<int> ParseFrameRange(const std::string& text)
+{
+    const std::string shown = OneLine(text, 80);
+    size_t i = 0;
+    long first = 0, last = 0;
+    bool ok = ParseFrameNumber(text, i, first);
+    last = first;
+    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    {
+        ++i;
+    }
+    if (ok && i < text.size() && text[i] == '-')
+    {
+        ++i;
+        ok = ParseFrameNumber(text, i, last);
+    }
+    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    {
+        ++i;
+    }
+    if (!ok || i != text.size())
+    {
+        throw Exception("frame range '" + shown +
+                        "': expected FIRST-LAST, e.g. 1001-1100 (frame numbers of at most 9 "
+                        "digits)");
+    }
+    if (last < first)
+    {
+        throw Exception("frame range '" + shown + "': the last frame comes before the first");
+    }
+    if (last - first + 1 > kMaxFramesPerCall)
+    {
+        throw Exception("frame range '" + shown + "': " + std::to_string(last - first + 1) +
+                        " frames; at most " + std::to_string(kMaxFramesPerCall) +
+                        " per call (split the range)");
+    }
+    std::vector<int> frames;
+    for (long f = first; f <= last; ++f)
+    {
+        frames.push_back(int(f));
+    }
+    return frames;
+}
+
+}  // namespace bandlight::jobs

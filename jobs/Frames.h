@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// Frame sequences: patterns (plate.####.exr, plate.%04d.exr) and the frame
+// ranges that name their frames.
+
+#include <string>
+#include <vector>
+
+namespace bandlight::jobs
+{
+
+/// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
+/// gives "plate.1001.exr"; a name without a pattern is returned unchanged.
+std::string ExpandFramePattern(const std::string& pattern, int frame);
+bool HasFramePattern(const std::string& pattern);
+
+/// Frame numbers are at most this wide in a pattern ("%09d", "#########").
+constexpr int kMaxFrameWidth = 9;
+/// At most this many frames in one call: a farm splits longer ranges.
+constexpr long kMaxFramesPerCall = 1000000;
+
+/// Parses "1001-1100" or "1001" into the frames it names (at most
+/// kMaxFramesPerCall, numbers of at most 9 digits); throws Exception.
+std::vector<int> ParseFrameRange(const std::string& text);
+
+}  // namespace bandlight::jobs

@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/Inputs.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "plugin/ConfigReferences.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+bool FileExists(const std::string& path)
+{
+    std::ifstream f(path);
+    return bool(f);
+}
+
+std::string Upper(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+    return s;
+}
+
+/// The line number after the first "line " or "Line " in an OCIO message
+/// (0 if none or implausible). Scanned by hand: messages quote file names
+/// of any length, which a recursive regex matcher cannot take.
+size_t LineInMessage(const std::string& what)
+{
+    for (size_t at = what.find("ine "); at != std::string::npos; at = what.find("ine ", at + 1))
+    {
+        if (at == 0 || (what[at - 1] != 'l' && what[at - 1] != 'L'))
+        {
+            continue;
+        }
+        size_t i = at + 4, line = 0, digits = 0;
+        for (; i < what.size() && std::isdigit(static_cast<unsigned char>(what[i])); ++i, ++digits)
+        {
+            line = digits < 9 ? line * 10 + size_t(what[i] - '0') : line;
+        }
+        if (digits > 0)
+        {
+            return digits <= 9 ? line : 0;
+        }
+    }
+    return 0;
+}
+}  // namespace
+
+Reporter& SilentReporter()
+{
+    static Reporter silent;
+    return silent;
+}
+
+Light CheckedIlluminant(const NamedSpectrum& s, const std::string& source, Reporter& reporter)
+{
+    NamedSpectrum checked = s;
+    checked.spectrum = UsableIlluminant(s.spectrum, source);
+    if (const std::string note = CoverageNote(checked, source, false); !note.empty())
+    {
+        reporter.note(note);
+    }
+    return {checked.name, checked.spectrum};
+}
+
+Light IlluminantFromFile(const std::string& path, Reporter& reporter)
+{
+    return CheckedIlluminant(ReadSpectraFile(path).front(), path, reporter);
+}
+
+Light ResolveIlluminant(const std::string& nameOrFile, Reporter& reporter)
+{
+    if (IsBuiltinIlluminant(nameOrFile))
+    {
+        return {CanonicalIlluminantName(nameOrFile), BuiltinIlluminant(nameOrFile)};
+    }
+    if (!FileExists(nameOrFile))
+    {
+        return {nameOrFile, BuiltinIlluminant(nameOrFile)};  // throws, listing the choices
+    }
+    return IlluminantFromFile(nameOrFile, reporter);
+}
+
+void CheckRemittance(const NamedSpectrum& s, const std::string& source, Reporter& reporter)
+{
+    CheckRemittanceMagnitude(s, source);
+    for (const std::string& note : {CoverageNote(s, source, true), RemittanceRangeNote(s, source)})
+    {
+        if (!note.empty())
+        {
+            reporter.note(note);
+        }
+    }
+}
+
+std::vector<NamedSpectrum> RemittancesFromFile(const std::string& path, Reporter& reporter)
+{
+    std::vector<NamedSpectrum> spectra = ReadSpectraFile(path);
+    for (const NamedSpectrum& s : spectra)
+    {
+        CheckRemittance(s, path, reporter);
+    }
+    return spectra;
+}
+
+std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile, Reporter& reporter)
+{
+    const std::string u = Upper(nameOrFile);
+    for (const NamedSpectrum& s : TestColourSamples())
+    {
+        if (s.name == u)
+        {
+            return {s};
+        }
+    }
+    if (u == "TCS" || u == "TCS-ALL")
+    {
+        return TestColourSamples();
+    }
+    if (!FileExists(nameOrFile))
+    {
+        throw Exception("unknown reflectance '" + nameOrFile +
+                        "' (TCS01-TCS15, TCS for all, or a spectrum file)");
+    }
+    return RemittancesFromFile(nameOrFile, reporter);
+}
+
+OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file)
+{
+    try
+    {
+        OCIO_NAMESPACE::ConstConfigRcPtr config =
+            OCIO_NAMESPACE::Config::CreateFromFile(file.c_str());
+        CheckConfigReferences(config, file);
+        return config;
+    }
+    catch (const OCIO_NAMESPACE::Exception& e)
+    {
+        // "Error: Loading the OCIO profile 'F' failed. At line 6, ..." or
+        // "... yaml-cpp: error at line 8, column 1: ...": keep what went wrong,
+        // and put the line where every other parse error has it.
+        std::string what = e.what();
+        const std::string failed = "' failed. ";
+        if (const size_t at = what.find(failed); at != std::string::npos)
+        {
+            what = what.substr(at + failed.size());
+        }
+        const size_t line = LineInMessage(what);
+        for (char& c : what)
+        {
+            c = c == '\n' ? ' ' : c;
+        }
+        throw Exception(SourcePosition(file, line) + ": cannot read the config: " + what);
+    }
+}
+
+OCIO_NAMESPACE::ConstConfigRcPtr LoadConfig(const std::string& path)
+{
+    const std::string file =
+        path.size() > 5 && path.substr(path.size() - 5) == ".ocio" ? path : path + "/config.ocio";
+    return ReadConfigFile(file);
+}
+
+Plates PlatesRequest::parsed() const
+{
+    return ParsePlates(plates, adaptation);
+}
+
+std::vector<Plates> PlatesRequest::all() const
+{
+    if (plates == "both")
+    {
+        return {ParsePlates("balanced", adaptation), ParsePlates("lit", adaptation)};
+    }
+    return {parsed()};
+}
+
+std::shared_ptr<const SpectralCamera> PlatesRequest::loadCamera() const
+{
+    if (camera.empty())
+    {
+        return nullptr;
+    }
+    return std::make_shared<const SpectralCamera>(ReadCameraFile(camera));
+}
+
+Light PlatesRequest::idt(Reporter& reporter) const
+{
+    return ResolveIlluminant(idtLight, reporter);
+}
+
+MethodSpec PlatesRequest::apply(MethodSpec method,
+                                const std::shared_ptr<const SpectralCamera>& cam,
+                                Reporter& reporter) const
+{
+    method.plates = parsed();
+    method.camera = cam;
+    if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
+    {
+        if (!cam)
+        {
+            throw ParameterError("method '" + method.name +
+                                 "' needs the camera that shot the plates ({camera=}FILE)");
+        }
+        const Light light = idt(reporter);
+        method.idtLightName = light.name;
+        method.idtLight = light.spectrum;
+    }
+    return method;
+}
+
+MethodSpec MethodFor(const std::string& name, const std::vector<NamedSpectrum>& training,
+                     const PlatesRequest& plates, Reporter& reporter)
+{
+    plates.parsed();  // a bad convention or adaptation is refused before anything is read
+    MethodSpec spec = plates.apply(ParseMethod(name), plates.loadCamera(), reporter);
+    return training.empty() ? spec : WithTraining(std::move(spec), training);
+}
+
+MethodSpec WithTraining(MethodSpec method, const std::vector<NamedSpectrum>& training)
+{
+    if (method.method != ChangeMethod::FIT3X3 && method.method != ChangeMethod::ROOTPOLY)
+    {
+        throw ParameterError("method '" + method.name +
+                             "' is not fitted: {training} remittances are for fit3x3, "
+                             "rootpoly and rootpoly3");
+    }
+    method.training = training;
+    return method;
+}
+
+MethodSpec RelightRequest::methodSpec(Reporter& reporter) const
+{
+    return MethodFor(method, training, plates, reporter);
+}
+
+const RgbSpace& RelightRequest::working() const
+{
+    return FindRgbSpace(workingSpace);
+}
+
+Relighter RelightRequest::relighter(Reporter& reporter) const
+{
+    return Relighter(src, dst, methodSpec(reporter), working(), ParseObserver(observer));
+}
+
+std::vector<std::string> SplitList(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+    {
+        if (!item.empty())
+        {
+            out.push_back(item);
+        }
+    }
+    return out;
+}
+
+void RequireFinite(double value, const std::string& what)
+{
+    if (!std::isfinite(value))
+    {
+        throw Exception(what + " is not a finite number (the input is out of range)");
+    }
+}
+
+int CheckedLutSize(int size, const std::string& parameter)
+{
+    if (size < defaults::MIN_LUT_SIZE || size > defaults::MAX_LUT_SIZE)
+    {
+        throw ParameterError("{" + parameter + "} must be " +
+                             std::to_string(defaults::MIN_LUT_SIZE) + " to " +
+                             std::to_string(defaults::MAX_LUT_SIZE) + ", got " +
+                             std::to_string(size));
+    }
+    return size;
+}
+
+std::string Fixed(double v, int decimals)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+}  // namespace bandlight::jobs

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "jobs/Inputs.h"
+#include "luts/LutWriter.h"
+
+namespace bandlight::jobs
+{
+
+/// `lut`: an illuminant change as a LUT file, written by OpenColorIO.
+struct LutRequest
+{
+    RelightRequest relight;
+    std::string out;                         ///< the LUT file
+    std::string format = defaults::LUT_FORMAT;  ///< clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini
+    /// 3D LUT points per axis (default defaults::LUT_SIZE); for CLF/CTF,
+    /// giving it bakes a 3D LUT instead of the exact matrix.
+    std::optional<int> size;
+    std::string shaper = defaults::LUT_SHAPER;  ///< "log2" or "none"
+};
+
+struct LutResult
+{
+    LutFiles files;
+    int size = defaults::LUT_SIZE;
+    ShaperSpec shaper;  ///< the shaper the lattice was baked through
+};
+
+/// Writes the LUT (and its companion shaper) of `request`, as one set.
+LutResult MakeLut(const LutRequest& request, Reporter& reporter = SilentReporter());
+
+}  // namespace bandlight::jobs

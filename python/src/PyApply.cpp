@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Image files and frame sequences through a look or an illuminant change,
+// as `bandlight apply` applies them (jobs/ApplyJob).
+#include "PyBandlight.h"
+#include "jobs/ApplyJob.h"
+
+namespace bandlight::python
+{
+
+namespace
+{
+std::string PathText(const py::object& arg, const std::string& what)
+{
+    if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
+    {
+        throw py::type_error(what + " is a file (str or os.PathLike), not " +
+                             py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+    }
+    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+}
+
+py::dict Apply(const py::object& input, const py::object& output,
+               const std::optional<std::string>& frames, const std::optional<std::string>& look,
+               const py::object& config, const std::optional<std::string>& colorspace,
+               const py::object& src, const py::object& dst, const std::string& method,
+               const std::string& working, const py::object& observer, const py::object& training,
+               const std::string& plates, const std::string& adaptation, const py::object& camera,
+               const std::string& cameraIdt, int threads)
+{
+    jobs::ApplyRequest r;
+    r.input = PathText(input, "input");
+    r.output = PathText(output, "output");
+    r.frames = frames.value_or("");
+    r.look = look.value_or("");
+    r.config = config.is_none() ? "" : PathText(config, "config");
+    r.colorspace = colorspace.value_or("");
+    r.threads = ToThreads(threads);
+    if (src.is_none() != dst.is_none())
+    {
+        throw ParameterError("give both {src} and {dst}, or a {look}");
+    }
+    if (r.look.empty() && !src.is_none())
+    {
+        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
+        jobs::RelightRequest relight;
+        relight.plates = platesArgs.options();
+        relight.plates.parsed();
+        if (!relight.plates.camera.empty())
+        {
+            platesArgs.loadCamera();  // OSError when unreadable
+        }
+        relight.src = ToLight(src);
+        relight.dst = ToLight(dst);
+        relight.method = method;
+        relight.workingSpace = working;
+        relight.observer = py::str(observer).cast<std::string>();
+        if (!training.is_none())
+        {
+            relight.training = ToReflectances(training);
+        }
+        r.relight = relight;
+    }
+    jobs::ApplyResult result;
+    {
+        py::gil_scoped_release release;
+        result = jobs::ApplyImages(r, Warnings());
+    }
+    py::dict d;
+    d["applied"] = result.applied;
+    d["frames"] = result.frames;
+    return d;
+}
+}  // namespace
+
+void AddApply(py::module_& m)
+{
+    m.def("apply", &Apply, py::arg("input"), py::arg("output"), py::kw_only(),
+          py::arg("frames") = py::none(), py::arg("look") = py::none(),
+          py::arg("config") = py::none(), py::arg("colorspace") = py::none(),
+          py::arg("src") = py::none(), py::arg("dst") = py::none(),
+          py::arg("method") = defaults::METHOD, py::arg("working_space") = defaults::WORKING_SPACE,
+          py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
+          py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
+          py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
+          py::arg("threads") = 0,
+          (std::string(R"doc(
+Applies a look, or an illuminant change, to an image file or a frame
+sequence through OpenImageIO: the job of ``bandlight apply``. Returns
+{"applied": what was applied, "frames": the frames written}.
+
+input, output: image files (any format OpenImageIO reads), or frame patterns
+such as "plate.####.exr" with frames="1001-1100". Each output keeps its
+input's pixel type, channels, alpha and metadata, and appears only when it
+is complete. look, config: a look of a config (its folder or .ocio file),
+applied in colorspace (default: the config's scene_linear role). Otherwise
+src, dst (names, files or Spectrum) and method: the illuminant change in
+working_space (rootpoly natively, the other methods through OCIO).
+training: fit3x3's / rootpoly's remittances. Runs with the GIL released on
+threads threads (0: all cores).
+)doc") + kPlatesDoc)
+              .c_str());
+}
+
+}  // namespace bandlight::python

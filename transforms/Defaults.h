@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// The one table of bandlight's defaults. The C++ request structs of the jobs
+// (jobs/), the command's options (cli/) and the Python module's keywords
+// (python/) all take their defaults from here, so the three faces cannot
+// drift apart.
+
+#include "transforms/Version.h"
+
+namespace bandlight::defaults
+{
+
+/// What a pipeline's images are: white-balanced to the working white, as
+/// every ACES IDT delivers them (docs/plates.md). "lit" is the other choice.
+inline constexpr const char* PLATES = "balanced";
+/// The adaptation balanced plates were balanced with: rawtoaces uses CAT02.
+inline constexpr const char* ADAPTATION = "cat02";
+/// The light a camera's one fixed IDT was fitted for (rootpoly-camera).
+inline constexpr const char* IDT_LIGHT = "D55";
+
+/// The linear working space of images, configs and LUTs.
+inline constexpr const char* WORKING_SPACE = "acescg";
+/// The illuminant-change method of `apply`, `lut` and Python's relighters.
+inline constexpr const char* METHOD = "bradford";
+/// The CIE standard observer: 1931 (2°).
+inline constexpr const char* OBSERVER = "1931";
+/// The lecture's three bands, edges in nm.
+inline constexpr const char* BANDS = "400,500,600,700";
+/// The illuminants a config gets looks between (the lecture's five).
+inline constexpr const char* CONFIG_ILLUMINANTS = "A,C,D65,F2,F11";
+
+/// 3D LUT size of a config's non-linear looks: 65³ keeps the LUT's own
+/// error near 0.05 ΔE00 where 33³ adds up to 0.25 (docs/accuracy.md); a 65³
+/// CLF file is about 12 MB.
+inline constexpr int CONFIG_LUT_SIZE = 65;
+/// 3D LUT size of a `lut` file.
+inline constexpr int LUT_SIZE = 33;
+/// The LUT sizes accepted anywhere: OCIO's Lut3D takes 2 to 129 points.
+inline constexpr int MIN_LUT_SIZE = 2;
+inline constexpr int MAX_LUT_SIZE = 129;
+/// The shaper of HDR LUT files.
+inline constexpr const char* LUT_SHAPER = "log2";
+/// The format of a `lut` file.
+inline constexpr const char* LUT_FORMAT = "clf";
+
+/// How a config extending a base rewrites the base's relative search paths.
+inline constexpr const char* BASE_PATHS = "relative";
+
+/// The folder `package` writes into.
+inline constexpr const char* PACKAGE_DIR = "bandlight-package";
+
+/// "bandlight 0.1.0": the version CMake's project() states.
+inline constexpr const char* VERSION = BANDLIGHT_VERSION;
+
+}  // namespace bandlight::defaults
