@@ -19,7 +19,7 @@ namespace OCIO = OCIO_NAMESPACE;
 /// output are both above the break (log2) or both below it (linear), which
 /// tetrahedral interpolation reproduces exactly: greys from 1e-4 to 65504
 /// come out to float precision. Chromatic colours carry the interpolation
-/// error of a matrix seen in log space (measured in the README). The break
+/// error of a matrix seen in log space (measured in docs/luts.md). The break
 /// sits at 2^-15 so that the kink stays below 1e-4; the negative range it
 /// leaves is small: values below `minLinear` are clamped by the LUT, and
 /// that is the stated range.

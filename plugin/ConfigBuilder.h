@@ -8,6 +8,7 @@
 
 #include "plugin/OcioTransforms.h"
 #include "spectral/AtomicFile.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -17,14 +18,15 @@ namespace bandlight
 /// <method>_<FROM>_to_<TO>, and the same as a named transform relight_<look>.
 struct ConfigOptions
 {
-    std::string workingSpace = "acescg";
+    std::string workingSpace = defaults::WORKING_SPACE;
     std::vector<Light> lights;
     std::vector<std::string> methods;
     Observer observer = Observer::CIE1931_2DEG;
-    /// Lattice size of the non-linear looks' 3D LUTs (upsample, rootpoly):
-    /// 65³ keeps the LUT's own error near 0.05 ΔE00 where 33³ adds up to
-    /// 0.25 (README, "What accuracy costs"); a 65³ CLF file is about 12 MB.
-    int lutSize = 65;
+    /// Lattice size of the non-linear looks' 3D LUTs (upsample, rootpoly,
+    /// rootpoly-camera; defaults::CONFIG_LUT_SIZE, 65): 65³ keeps the LUT's
+    /// own error near 0.05 ΔE00 where 33³ adds up to 0.25 (docs/accuracy.md);
+    /// a 65³ CLF file is about 12 MB.
+    int lutSize = defaults::CONFIG_LUT_SIZE;
     /// Where the config will be written (ExtendConfig: the base's relative
     /// search paths are rewritten to reach the base's folder from here).
     std::string outputDir;
@@ -33,7 +35,7 @@ struct ConfigOptions
     bool absoluteBasePaths = false;
     /// What the pipeline's images are. Balanced (CAT02) by default: in an
     /// ACES pipeline every IDT white-balances, so a plate shot under
-    /// tungsten arrives neutral (README, "Plates: lit or balanced").
+    /// tungsten arrives neutral (docs/plates.md).
     Plates plates{PlateConvention::BALANCED, AdaptationMethod::CAT02};
     /// rootpoly-camera: the camera that shot the plates and the light of
     /// its one fixed IDT (empty name: DEFAULT_IDT_LIGHT).

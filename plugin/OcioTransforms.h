@@ -7,6 +7,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "spectral/Colorimetry.h"
+#include "transforms/Defaults.h"
 #include "transforms/IlluminantChange.h"
 
 namespace bandlight
@@ -43,7 +44,7 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
                                                     const MethodSpec& method,
                                                     const RgbSpace& working,
                                                     Observer observer = Observer::CIE1931_2DEG,
-                                                    int lutSize = 33);
+                                                    int lutSize = defaults::LUT_SIZE);
 
 /// Working RGB → the band space of a three-band set (radiometric band
 /// values, VB/VG/VR for the lecture's bands). Throws Exception for other

@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "render/YamlReader.h"
+#include "render/detail/YamlReader.h"
 #include "spectral/CieData.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "render/YamlReader.h"
+#include "render/detail/YamlReader.h"
 
 #include <algorithm>
 #include <cmath>

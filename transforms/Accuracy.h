@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "transforms/Defaults.h"
 #include "transforms/IlluminantChange.h"
 #include "transforms/SurfaceRenderer.h"
 
@@ -52,7 +53,7 @@ struct AccuracyOptions
     std::vector<Light> lights;  ///< every ordered pair of distinct lights
     std::vector<std::string> methods;
     std::vector<ReflectanceSet> sets;
-    std::string workingSpace = "acescg";
+    std::string workingSpace = defaults::WORKING_SPACE;
     Observer observer = Observer::CIE1931_2DEG;
     /// The levels k the colours are seen at: 2^-8 … 2^4 of the white.
     std::vector<double> exposures = {1.0 / 256, 1.0 / 64, 1.0 / 16, 1.0 / 4, 1.0, 4.0, 16.0};

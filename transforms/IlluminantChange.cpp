@@ -16,6 +16,8 @@
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
+#include "transforms/Methods.h"
+#include "transforms/detail/LinearFits.h"
 #include "transforms/SpectralMethods.h"
 #include "transforms/Upsampler.h"
 
@@ -26,12 +28,6 @@ namespace bandlight
 
 namespace
 {
-
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
 
 /// Band model matrix B (3 × N, rows normalised) and its Moore–Penrose
 /// pseudo-inverse (the ordinary inverse for three bands).
@@ -69,180 +65,6 @@ Vec3 WhiteOf(const Light& light, Observer observer)
 
 }  // namespace
 
-MethodSpec ParseMethod(const std::string& name)
-{
-    const std::string n = Lower(name);
-    MethodSpec m;
-    m.name = n;
-    static const std::pair<const char*, ChangeMethod> kFixed[] = {
-        {"none", ChangeMethod::NONE},
-        {"vonkries", ChangeMethod::VON_KRIES},
-        {"bradford", ChangeMethod::BRADFORD},
-        {"cat02", ChangeMethod::CAT02},
-        {"fit3x3", ChangeMethod::FIT3X3},
-        {"prefilter", ChangeMethod::PREFILTER},
-        {"metamer", ChangeMethod::METAMER},
-        {"upsample", ChangeMethod::UPSAMPLE},
-        {"spectral", ChangeMethod::SPECTRAL},
-        {"rootpoly", ChangeMethod::ROOTPOLY},
-        {"rootpoly2", ChangeMethod::ROOTPOLY},
-        {"rootpoly3", ChangeMethod::ROOTPOLY},
-        {"rootpoly-camera", ChangeMethod::ROOTPOLY_CAMERA},
-        {"rootpoly2-camera", ChangeMethod::ROOTPOLY_CAMERA},
-        {"rootpoly3-camera", ChangeMethod::ROOTPOLY_CAMERA},
-    };
-    const auto fixed = std::find_if(std::begin(kFixed), std::end(kFixed),
-                                    [&](const auto& f) { return n == f.first; });
-    if (fixed != std::end(kFixed))
-    {
-        m.method = fixed->second;
-        if (m.method == ChangeMethod::ROOTPOLY)
-        {
-            m.degree = n == "rootpoly3" ? 3 : 2;
-            m.name = m.degree == 3 ? "rootpoly3" : "rootpoly";
-        }
-        else if (m.method == ChangeMethod::ROOTPOLY_CAMERA)
-        {
-            m.degree = n == "rootpoly3-camera" ? 3 : 2;
-            m.name = m.degree == 3 ? "rootpoly3-camera" : "rootpoly-camera";
-        }
-    }
-    else if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
-    {
-        // Any band set, written into the name so it can name looks:
-        // "bands380-480-560-780" (edges in nm), "-wp" for the white-preserving form.
-        std::string edges = n.substr(5);
-        m.method = ChangeMethod::BAND;
-        if (edges.size() > 3 && edges.compare(edges.size() - 3, 3, "-wp") == 0)
-        {
-            m.method = ChangeMethod::BAND_WP;
-            edges = edges.substr(0, edges.size() - 3);
-        }
-        std::replace(edges.begin(), edges.end(), '-', ',');
-        m.bands = BandSet::Parse(edges);
-        if (m.bands.size() < 3)
-        {
-            throw Exception("method '" + name + "': a band set needs at least three bands");
-        }
-    }
-    else if (n.rfind("band", 0) == 0)
-    {
-        std::string rest = n.substr(4);
-        m.method = ChangeMethod::BAND;
-        const size_t dash = rest.find("-wp");
-        if (dash != std::string::npos && dash + 3 == rest.size())
-        {
-            m.method = ChangeMethod::BAND_WP;
-            rest = rest.substr(0, dash);
-        }
-        const bool digits =
-            !rest.empty() && rest.size() <= 3 && std::all_of(rest.begin(), rest.end(), ::isdigit);
-        const int count = digits ? std::stoi(rest) : 0;
-        if (count < 3 || count > 300)
-        {
-            throw Exception("unknown method '" + name +
-                            "': band methods are bandN or bandN-wp with 3 <= N <= 300");
-        }
-        m.bands = count == 3 ? BandSet::Lecture() : BandSet::Equal(size_t(count), 400.0, 700.0);
-    }
-    else
-    {
-        throw Exception("unknown method '" + name +
-                        "' (none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
-                        "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
-                        "rootpoly3, rootpoly-camera, rootpoly3-camera, spectral)");
-    }
-    return m;
-}
-
-const std::vector<std::string>& LinearMethodNames()
-{
-    static const std::vector<std::string> names = {"none",  "vonkries", "bradford",
-                                                   "cat02", "band3",    "band3-wp"};
-    return names;
-}
-
-const std::vector<std::string>& AllMethodNames()
-{
-    static const std::vector<std::string> names = {
-        "none",     "vonkries", "bradford",  "cat02",   "band3",    "band3-wp", "band6",
-        "band6-wp", "fit3x3",   "prefilter", "metamer", "upsample", "rootpoly", "rootpoly3"};
-    return names;
-}
-
-std::string MethodSyntax()
-{
-    return "none, vonkries, bradford, cat02, band3, band3-wp, bandN, bandN-wp, "
-           "bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, upsample, rootpoly, "
-           "rootpoly3, rootpoly-camera (with {camera})";
-}
-
-std::string DescribeMethod(const MethodSpec& m)
-{
-    switch (m.method)
-    {
-        case ChangeMethod::NONE:
-            return "Identity: the image is left as it is (the baseline every method is "
-                   "compared with).";
-        case ChangeMethod::VON_KRIES:
-            return "von Kries scaling of XYZ by the ratio of the two white points: exact on "
-                   "white, the crudest chromatic adaptation for colours.";
-        case ChangeMethod::BRADFORD:
-            return "Bradford chromatic adaptation (linearised): exact on white; the usual "
-                   "white-balance matrix, good for broadband lights.";
-        case ChangeMethod::CAT02:
-            return "CAT02 chromatic adaptation (CIECAM02): exact on white; similar to Bradford.";
-        case ChangeMethod::BAND:
-        {
-            std::ostringstream s;
-            s << "The lecture's " << m.bands.size() << "-band model: each band ("
-              << m.bands.describe()
-              << " nm) scaled by the ratio of the lights' band means, white luminance kept; "
-                 "not exact on white, wrong where lights and surfaces are spiky.";
-            return s.str();
-        }
-        case ChangeMethod::BAND_WP:
-        {
-            std::ostringstream s;
-            s << m.bands.size() << "-band model (" << m.bands.describe()
-              << " nm) with ratios from the band coordinates of the two whites: exact on white, "
-                 "a diagonal in band space for colours.";
-            return s.str();
-        }
-        case ChangeMethod::FIT3X3:
-            return "3x3 fitted by least squares on training remittances (TCS01-08 and 100 "
-                   "smooth random ones), exact on white.";
-        case ChangeMethod::PREFILTER:
-            return "von Kries in the sharpened primaries of spectral prefiltering (Ward & "
-                   "Eydelberg-Vileshin 2002, Sharp sensors): exact on white.";
-        case ChangeMethod::METAMER:
-            return "The smoothest remittance that reproduces the pixel under the first light, "
-                   "re-lit under the second: one 3x3, exact on white.";
-        case ChangeMethod::UPSAMPLE:
-            return "A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika 2019 "
-                   "sigmoid polynomial), re-lit spectrally: not linear, baked into a 3D LUT with a "
-                   "log2 shaper.";
-        case ChangeMethod::ROOTPOLY:
-            return std::string("Root-polynomial regression of degree ") +
-                   (m.degree == 3 ? "3" : "2") +
-                   " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
-                   "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
-                   "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
-        case ChangeMethod::ROOTPOLY_CAMERA:
-            return std::string("For plates made with one fixed ") + m.idtLightName +
-                   " IDT of camera " + (m.camera ? m.camera->name() : std::string("(none)")) +
-                   " and white-balance gains: that IDT inverted, then a root polynomial of "
-                   "degree " +
-                   (m.degree == 3 ? "3" : "2") +
-                   " fitted from the camera's record under the source light to the target "
-                   "(205 measured remittances): not linear, baked into a 3D LUT with a log2 "
-                   "shaper.";
-        case ChangeMethod::SPECTRAL:
-            return "The exact spectral answer for known remittances: the reference.";
-    }
-    return {};
-}
-
 Eigen::MatrixXd WorkingToBandMatrix(const BandSet& bands, const RgbSpace& working,
                                     Observer observer)
 {
@@ -270,54 +92,46 @@ Mat3 MaterialTintMatrix(const std::vector<double>& remittance, const BandSet& ba
            WorkingToBandMatrix(bands, working, observer);
 }
 
-namespace
+namespace detail
 {
 
-Mat3 LitChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
+Mat3 IdentityFit(const Light&, const Light&, const MethodSpec&, const RgbSpace&, Observer)
+{
+    return Mat3::Identity();
+}
+
+Mat3 AdaptationFit(const Light& from, const Light& to, const MethodSpec& method,
+                   const RgbSpace& working, Observer observer)
+{
+    const Mat3 m = RgbToXyzMatrix(working.chromaticities);
+    const AdaptationMethod cat = method.method == ChangeMethod::VON_KRIES
+                                     ? AdaptationMethod::XYZ_SCALING
+                                 : method.method == ChangeMethod::BRADFORD ? AdaptationMethod::BRADFORD
+                                 : method.method == ChangeMethod::PREFILTER ? AdaptationMethod::SHARP
+                                                                            : AdaptationMethod::CAT02;
+    return m.inverse() * AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer), cat) * m;
+}
+
+Mat3 LeastSquaresFit(const Light& from, const Light& to, const MethodSpec& method,
                      const RgbSpace& working, Observer observer)
+{
+    const SurfaceRenderer r1(from.spectrum, working, observer);
+    const SurfaceRenderer r2(to.spectrum, working, observer);
+    return FitMatrix(r1, r2, method.training.empty() ? TrainingSet().samples : method.training);
+}
+
+Mat3 MetamerFit(const Light& from, const Light& to, const MethodSpec&, const RgbSpace& working,
+                Observer observer)
+{
+    return MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
+                         SurfaceRenderer(to.spectrum, working, observer));
+}
+
+Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method,
+             const RgbSpace& working, Observer observer)
 {
     const Mat3 m = RgbToXyzMatrix(working.chromaticities);
     const Mat3 mInv = m.inverse();
-    switch (method.method)
-    {
-        case ChangeMethod::NONE:
-            return Mat3::Identity();
-        case ChangeMethod::VON_KRIES:
-        case ChangeMethod::BRADFORD:
-        case ChangeMethod::CAT02:
-        {
-            const AdaptationMethod cat =
-                method.method == ChangeMethod::VON_KRIES  ? AdaptationMethod::XYZ_SCALING
-                : method.method == ChangeMethod::BRADFORD ? AdaptationMethod::BRADFORD
-                                                          : AdaptationMethod::CAT02;
-            return mInv * AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer), cat) * m;
-        }
-        case ChangeMethod::BAND:
-        case ChangeMethod::BAND_WP:
-            break;
-        case ChangeMethod::PREFILTER:
-            return mInv *
-                   AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer),
-                                    AdaptationMethod::SHARP) *
-                   m;
-        case ChangeMethod::FIT3X3:
-        {
-            const SurfaceRenderer r1(from.spectrum, working, observer);
-            const SurfaceRenderer r2(to.spectrum, working, observer);
-            return FitMatrix(r1, r2,
-                             method.training.empty() ? TrainingSet().samples : method.training);
-        }
-        case ChangeMethod::METAMER:
-            return MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
-                                 SurfaceRenderer(to.spectrum, working, observer));
-        case ChangeMethod::UPSAMPLE:
-        case ChangeMethod::ROOTPOLY:
-        case ChangeMethod::ROOTPOLY_CAMERA:
-        case ChangeMethod::SPECTRAL:
-            throw Exception("method '" + method.name +
-                            "' is not one 3x3 matrix: apply it through a Relighter (upsample, "
-                            "rootpoly) or to spectra (spectral)");
-    }
     const BandSet& bands = method.bands;
     const BandBasis basis = MakeBandBasis(bands, observer);
     Eigen::VectorXd ratio(Eigen::Index(bands.size()));
@@ -367,6 +181,23 @@ Mat3 LitChangeMatrix(const Light& from, const Light& to, const MethodSpec& metho
     return mInv * basis.b * ratio.asDiagonal() * basis.pinv * m;
 }
 
+}  // namespace detail
+
+namespace
+{
+/// The lit 3×3 of a linear method, through its registry entry.
+Mat3 LitChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,
+                     const RgbSpace& working, Observer observer)
+{
+    const MethodEntry& entry = FindMethod(method.method);
+    if (!entry.litMatrix)
+    {
+        throw Exception("method '" + method.name +
+                        "' is not one 3x3 matrix: apply it through a Relighter (upsample, "
+                        "rootpoly) or to spectra (spectral)");
+    }
+    return entry.litMatrix(from, to, method, working, observer);
+}
 }  // namespace
 
 Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec& method,

@@ -38,7 +38,8 @@ enum class ChangeMethod
     SPECTRAL,  ///< the exact answer for known spectra: the reference, not an image transform
 };
 
-/// A method with its parameters, parsed from its name: "none", "vonkries",
+/// A method with its parameters (transforms/Methods.h lists them all),
+/// parsed from its name: "none", "vonkries",
 /// "bradford", "cat02", "band3" (the lecture's VB/VG/VR), "band3-wp",
 /// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), any band set as
 /// "bands380-480-560-780" (edges in nm, "-wp" appended for the
@@ -71,12 +72,9 @@ struct MethodSpec
     {
         return method == ChangeMethod::BAND || method == ChangeMethod::BAND_WP;
     }
-    /// One 3×3 in the working space (everything but upsample, rootpoly and spectral).
-    bool isLinear() const noexcept
-    {
-        return method != ChangeMethod::UPSAMPLE && method != ChangeMethod::ROOTPOLY &&
-               method != ChangeMethod::ROOTPOLY_CAMERA && method != ChangeMethod::SPECTRAL;
-    }
+    /// One 3×3 in the working space (everything but upsample, rootpoly,
+    /// rootpoly-camera and spectral): its registry entry's kernel is MATRIX.
+    bool isLinear() const noexcept;
 };
 
 /// Parses a method name (case-insensitive); throws Exception listing the choices.
@@ -87,7 +85,8 @@ MethodSpec ParseMethod(const std::string& name);
 const std::vector<std::string>& LinearMethodNames();
 
 /// Every image method compared by `bandlight accuracy`: the linear ones,
-/// band6, band6-wp, fit3x3, prefilter, metamer and upsample.
+/// band6, band6-wp, fit3x3, prefilter, metamer, upsample, rootpoly and
+/// rootpoly3.
 const std::vector<std::string>& AllMethodNames();
 
 /// Every method name a user can give, as help text: "none, vonkries, ...,

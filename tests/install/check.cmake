@@ -20,3 +20,20 @@ execute_process(COMMAND "${WORK_DIR}/build/host" RESULT_VARIABLE rc)
 if(rc)
     message(FATAL_ERROR "the host ran but gave the wrong answer")
 endif()
+# The jobs library's host writes, with a default request, the config.ocio
+# the command writes with its defaults.
+execute_process(COMMAND "${WORK_DIR}/build/config_host" "${WORK_DIR}/host_config"
+                RESULT_VARIABLE rc)
+if(rc)
+    message(FATAL_ERROR "the config host failed: ${rc}")
+endif()
+execute_process(COMMAND "${BANDLIGHT_EXE}" config --out "${WORK_DIR}/command_config"
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+    message(FATAL_ERROR "bandlight config failed: ${rc}")
+endif()
+file(READ "${WORK_DIR}/host_config/config.ocio" _host)
+file(READ "${WORK_DIR}/command_config/config.ocio" _command)
+if(NOT _host STREQUAL _command OR _host STREQUAL "")
+    message(FATAL_ERROR "the host's config.ocio differs from the command's")
+endif()

@@ -88,7 +88,7 @@ def test_band_means_of_spectra():
 def test_band_matrices():
     to_xyz, from_xyz, condition = bandlight.band_to_colour_matrix()
     np.testing.assert_allclose(to_xyz @ from_xyz, np.eye(3), atol=1e-12)
-    assert condition == pytest.approx(4.35, abs=0.01)  # README: the lecture's bands
+    assert condition == pytest.approx(4.35, abs=0.01)  # docs/science.md: the lecture's bands
     assert bandlight.condition_number(to_xyz) == pytest.approx(condition)
     to_bands = bandlight.working_to_band_matrix(working_space="acescg")
     back = bandlight.band_to_working_matrix(working_space="acescg")

@@ -48,6 +48,15 @@ def test_written_config_equals_the_commands(tmp_path):
     assert len(list(again.getLooks())) == len(list(config.getLooks())) == 12
 
 
+def test_default_config_is_the_commands_byte_for_byte(tmp_path):
+    # bandlight config --out A and bandlight.config("B"): one job, one default
+    # request, the same file (tests/jobs checks a C++ host's call too).
+    bandlight.config(tmp_path / "B")
+    run_cli("config", "--out", tmp_path / "A")
+    written = (tmp_path / "B" / "config.ocio").read_bytes()
+    assert written and written == (tmp_path / "A" / "config.ocio").read_bytes()
+
+
 def test_non_linear_looks_write_their_luts(tmp_path):
     py_dir, cli_dir = tmp_path / "py", tmp_path / "cli"
     config = bandlight.config(py_dir, illuminants=["A", "D65"], methods=["rootpoly"],

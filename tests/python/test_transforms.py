@@ -177,7 +177,7 @@ def test_upsample_and_rootpoly_are_lattices():
     lut = next(p for p in t if isinstance(p, OCIO.Lut3DTransform))
     assert lut.getGridSize() == 33
     # The LUT follows the native map on plate colours (channels 0.3-1 of
-    # their level, README "What accuracy costs"), at any level.
+    # their level, docs/accuracy.md), at any level.
     rng = np.random.default_rng(5)
     pixels = (rng.uniform(0.3, 1.0, (500, 3)) * 2.0 ** rng.uniform(-6, 6, (500, 1)))
     pixels = pixels.astype(np.float32)

@@ -369,8 +369,11 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
 TEST_CASE("rootpoly-camera needs a camera", "[transforms][camera]")
 {
     const RgbSpace& ws = FindRgbSpace("acescg");
+    // The library names the parameter; the command spells it --camera FILE.
     CHECK_THROWS_WITH(Relighter(L("A"), L("D65"), ParseMethod("rootpoly-camera"), ws),
-                      Contains("needs the camera that shot the plates (--camera FILE)"));
+                      Contains("needs the camera that shot the plates (camera = FILE)"));
+    CHECK_THROWS_AS(Relighter(L("A"), L("D65"), ParseMethod("rootpoly-camera"), ws),
+                    ParameterError);
     AccuracyOptions o;
     o.lights = {L("A"), L("D65")};
     o.methods = {"rootpoly-camera"};

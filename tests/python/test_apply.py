@@ -1,0 +1,73 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""bandlight.apply: image files and frame sequences, as `bandlight apply`."""
+
+import numpy as np
+import OpenImageIO as oiio
+import pytest
+
+import bandlight
+from conftest import cli_error, run_cli
+
+
+def write_plate(path, seed=1, channels=4):
+    rng = np.random.default_rng(seed)
+    px = rng.uniform(0.0, 4.0, (12, 20, channels)).astype(np.float32)
+    if channels == 4:
+        px[..., 3] = 0.5
+    out = oiio.ImageOutput.create(str(path))
+    assert out.open(str(path), oiio.ImageSpec(20, 12, channels, "float"))
+    assert out.write_image(px)
+    out.close()
+    return px
+
+
+def read(path):
+    return oiio.ImageInput.open(str(path)).read_image("float")
+
+
+def test_apply_a_relight_equals_the_command_and_the_relighter(tmp_path):
+    px = write_plate(tmp_path / "plate.exr")
+    result = bandlight.apply(tmp_path / "plate.exr", tmp_path / "py.exr", src="A", dst="D65")
+    assert result == {"applied": "bradford_A_to_D65", "frames": 1}
+    run_cli("apply", tmp_path / "plate.exr", tmp_path / "cli.exr", "--from", "A", "--to", "D65")
+    out = read(tmp_path / "py.exr")
+    np.testing.assert_array_equal(out, read(tmp_path / "cli.exr"))
+    np.testing.assert_array_equal(out[..., 3], px[..., 3])  # alpha passes through
+    # The same pixels as the in-memory relighter (to float rounding of OCIO's matrix).
+    mem = bandlight.Relighter("A", "D65", "bradford").apply(px[..., :3].copy())
+    np.testing.assert_allclose(out[..., :3], mem, rtol=2e-6, atol=1e-7)
+
+
+def test_apply_a_sequence_and_a_look(tmp_path):
+    for f in (1001, 1002, 1003):
+        write_plate(tmp_path / f"plate.{f}.exr", seed=f, channels=3)
+    r = bandlight.apply(tmp_path / "plate.####.exr", tmp_path / "out.####.exr",
+                        frames="1001-1003", src="F11", dst="D65", method="rootpoly")
+    assert r["frames"] == 3 and r["applied"].endswith("(native)")
+    run_cli("apply", tmp_path / "plate.####.exr", tmp_path / "cli.####.exr", "--frames",
+            "1001-1003", "--from", "F11", "--to", "D65", "--method", "rootpoly")
+    for f in (1001, 1002, 1003):
+        np.testing.assert_array_equal(read(tmp_path / f"out.{f}.exr"),
+                                      read(tmp_path / f"cli.{f}.exr"))
+    config = tmp_path / "config"
+    bandlight.config(config, illuminants="A,D65", methods=["band3"])
+    r = bandlight.apply(tmp_path / "plate.1001.exr", tmp_path / "look.exr",
+                        look="band3_A_to_D65", config=config)
+    assert r == {"applied": "look band3_A_to_D65", "frames": 1}
+
+
+def test_apply_errors_name_python_parameters(tmp_path):
+    write_plate(tmp_path / "plate.exr")
+    with pytest.raises(ValueError) as e:
+        bandlight.apply(tmp_path / "plate.exr", tmp_path / "o.exr")
+    assert str(e.value) == "give look=NAME config=DIR, or src=S1 dst=S2 [method=M]"
+    assert cli_error("apply", tmp_path / "plate.exr", tmp_path / "o.exr") == \
+        "give --look NAME --config DIR, or --from S1 --to S2 [--method M]"
+    with pytest.raises(ValueError, match="give frames=FIRST-LAST"):
+        bandlight.apply(tmp_path / "p.####.exr", tmp_path / "o.####.exr", src="A", dst="D65")
+    with pytest.raises(ValueError, match="threads must be 0"):
+        bandlight.apply(tmp_path / "plate.exr", tmp_path / "o.exr", src="A", dst="D65",
+                        threads=-1)
+    with pytest.raises(ValueError, match="no-such.exr"):
+        bandlight.apply(tmp_path / "no-such.exr", tmp_path / "o.exr", src="A", dst="D65")
+    assert not (tmp_path / "o.exr").exists()

@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The method registry: every illuminant-change method in one table, and the
+// name parsing, descriptions and default lists read from it.
+#include "transforms/Methods.h"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+#include "spectral/Exception.h"
+#include "transforms/detail/LinearFits.h"
+
+namespace bandlight
+{
+
+namespace
+{
+
+std::string Lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+/// A method with one name.
+template <ChangeMethod M>
+bool ParseExact(const std::string& name, MethodSpec& spec, const char* canonical)
+{
+    if (name != canonical)
+    {
+        return false;
+    }
+    spec.method = M;
+    return true;
+}
+
+#define BANDLIGHT_EXACT(M, NAME)                                    \
+    [](const std::string& n, MethodSpec& s)                         \
+    { return ParseExact<ChangeMethod::M>(n, s, NAME); }
+
+/// rootpoly / rootpoly2 / rootpoly3, with `suffix` ("" or "-camera").
+bool ParseRootPoly(const std::string& n, MethodSpec& m, ChangeMethod method,
+                   const std::string& suffix)
+{
+    for (const int degree : {2, 3})
+    {
+        const std::string plain = "rootpoly" + suffix;
+        const std::string numbered = "rootpoly" + std::to_string(degree) + suffix;
+        if (n == numbered || (degree == 2 && n == plain))
+        {
+            m.method = method;
+            m.degree = degree;
+            m.name = degree == 3 ? numbered : plain;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// band3, bandN, bandN-wp, bands380-480-560-780[-wp].
+bool ParseBand(const std::string& n, MethodSpec& m)
+{
+    if (n.rfind("bands", 0) == 0 && n.size() > 5 && std::isdigit((unsigned char)n[5]))
+    {
+        // Any band set, written into the name so it can name looks:
+        // "bands380-480-560-780" (edges in nm), "-wp" for the white-preserving form.
+        std::string edges = n.substr(5);
+        m.method = ChangeMethod::BAND;
+        if (edges.size() > 3 && edges.compare(edges.size() - 3, 3, "-wp") == 0)
+        {
+            m.method = ChangeMethod::BAND_WP;
+            edges = edges.substr(0, edges.size() - 3);
+        }
+        std::replace(edges.begin(), edges.end(), '-', ',');
+        m.bands = BandSet::Parse(edges);
+        if (m.bands.size() < 3)
+        {
+            throw Exception("method '" + n + "': a band set needs at least three bands");
+        }
+        return true;
+    }
+    if (n.rfind("band", 0) != 0)
+    {
+        return false;
+    }
+    std::string rest = n.substr(4);
+    m.method = ChangeMethod::BAND;
+    const size_t dash = rest.find("-wp");
+    if (dash != std::string::npos && dash + 3 == rest.size())
+    {
+        m.method = ChangeMethod::BAND_WP;
+        rest = rest.substr(0, dash);
+    }
+    const bool digits =
+        !rest.empty() && rest.size() <= 3 && std::all_of(rest.begin(), rest.end(), ::isdigit);
+    const int count = digits ? std::stoi(rest) : 0;
+    if (count < 3 || count > 300)
+    {
+        throw Exception("unknown method '" + n +
+                        "': band methods are bandN or bandN-wp with 3 <= N <= 300");
+    }
+    m.bands = count == 3 ? BandSet::Lecture() : BandSet::Equal(size_t(count), 400.0, 700.0);
+    return true;
+}
+
+std::string DescribeBand(const MethodSpec& m)
+{
+    std::ostringstream s;
+    if (m.method == ChangeMethod::BAND)
+    {
+        s << "The lecture's " << m.bands.size() << "-band model: each band ("
+          << m.bands.describe()
+          << " nm) scaled by the ratio of the lights' band means, white luminance kept; "
+             "not exact on white, wrong where lights and surfaces are spiky.";
+    }
+    else
+    {
+        s << m.bands.size() << "-band model (" << m.bands.describe()
+          << " nm) with ratios from the band coordinates of the two whites: exact on white, "
+             "a diagonal in band space for colours.";
+    }
+    return s.str();
+}
+
+#define BANDLIGHT_TEXT(TEXT) [](const MethodSpec&) -> std::string { return TEXT; }
+
+std::vector<MethodEntry> MakeMethods()
+{
+    using K = MethodKernel;
+    // clang-format off
+    return {
+        {{ChangeMethod::NONE}, "none", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(NONE, "none"),
+         BANDLIGHT_TEXT("Identity: the image is left as it is (the baseline every method is "
+                        "compared with)."),
+         &detail::IdentityFit, {"none"}, {"none"}},
+        {{ChangeMethod::VON_KRIES}, "vonkries", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(VON_KRIES, "vonkries"),
+         BANDLIGHT_TEXT("von Kries scaling of XYZ by the ratio of the two white points: exact "
+                        "on white, the crudest chromatic adaptation for colours."),
+         &detail::AdaptationFit, {"vonkries"}, {"vonkries"}},
+        {{ChangeMethod::BRADFORD}, "bradford", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(BRADFORD, "bradford"),
+         BANDLIGHT_TEXT("Bradford chromatic adaptation (linearised): exact on white; the usual "
+                        "white-balance matrix, good for broadband lights."),
+         &detail::AdaptationFit, {"bradford"}, {"bradford"}},
+        {{ChangeMethod::CAT02}, "cat02", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(CAT02, "cat02"),
+         BANDLIGHT_TEXT("CAT02 chromatic adaptation (CIECAM02): exact on white; similar to "
+                        "Bradford."),
+         &detail::AdaptationFit, {"cat02"}, {"cat02"}},
+        {{ChangeMethod::BAND, ChangeMethod::BAND_WP},
+         "band3, band3-wp, bandN, bandN-wp, bandsE0-E1-...-En[-wp]", K::MATRIX, false, false,
+         &ParseBand, &DescribeBand, &detail::BandFit,
+         {"band3", "band3-wp"}, {"band3", "band3-wp", "band6", "band6-wp"}},
+        {{ChangeMethod::FIT3X3}, "fit3x3", K::MATRIX, true, false,
+         BANDLIGHT_EXACT(FIT3X3, "fit3x3"),
+         BANDLIGHT_TEXT("3x3 fitted by least squares on training remittances (TCS01-08 and 100 "
+                        "smooth random ones), exact on white."),
+         &detail::LeastSquaresFit, {}, {"fit3x3"}},
+        {{ChangeMethod::PREFILTER}, "prefilter", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(PREFILTER, "prefilter"),
+         BANDLIGHT_TEXT("von Kries in the sharpened primaries of spectral prefiltering (Ward & "
+                        "Eydelberg-Vileshin 2002, Sharp sensors): exact on white."),
+         &detail::AdaptationFit, {}, {"prefilter"}},
+        {{ChangeMethod::METAMER}, "metamer", K::MATRIX, false, false,
+         BANDLIGHT_EXACT(METAMER, "metamer"),
+         BANDLIGHT_TEXT("The smoothest remittance that reproduces the pixel under the first "
+                        "light, re-lit under the second: one 3x3, exact on white."),
+         &detail::MetamerFit, {}, {"metamer"}},
+        {{ChangeMethod::UPSAMPLE}, "upsample", K::UPSAMPLE, false, false,
+         BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
+         BANDLIGHT_TEXT("A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika 2019 "
+                        "sigmoid polynomial), re-lit spectrally: not linear, baked into a 3D LUT "
+                        "with a log2 shaper."),
+         nullptr, {}, {"upsample"}},
+        {{ChangeMethod::ROOTPOLY}, "rootpoly, rootpoly3", K::ROOTPOLY, true, false,
+         [](const std::string& n, MethodSpec& s)
+         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY, ""); },
+         [](const MethodSpec& m) -> std::string
+         {
+             return std::string("Root-polynomial regression of degree ") +
+                    (m.degree == 3 ? "3" : "2") +
+                    " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
+                    "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
+                    "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
+         },
+         nullptr, {}, {"rootpoly", "rootpoly3"}},
+        {{ChangeMethod::ROOTPOLY_CAMERA}, "rootpoly-camera, rootpoly3-camera", K::ROOTPOLY, false,
+         true,
+         [](const std::string& n, MethodSpec& s)
+         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY_CAMERA, "-camera"); },
+         [](const MethodSpec& m) -> std::string
+         {
+             return std::string("For plates made with one fixed ") + m.idtLightName +
+                    " IDT of camera " + (m.camera ? m.camera->name() : std::string("(none)")) +
+                    " and white-balance gains: that IDT inverted, then a root polynomial of "
+                    "degree " +
+                    (m.degree == 3 ? "3" : "2") +
+                    " fitted from the camera's record under the source light to the target "
+                    "(205 measured remittances): not linear, baked into a 3D LUT with a log2 "
+                    "shaper.";
+         },
+         nullptr, {}, {}},
+        {{ChangeMethod::SPECTRAL}, "spectral", K::SPECTRAL, false, false,
+         BANDLIGHT_EXACT(SPECTRAL, "spectral"),
+         BANDLIGHT_TEXT("The exact spectral answer for known remittances: the reference."),
+         nullptr, {}, {}},
+    };
+    // clang-format on
+}
+
+std::vector<std::string> Collect(std::vector<const char*> MethodEntry::*list)
+{
+    std::vector<std::string> names;
+    for (const MethodEntry& e : Methods())
+    {
+        names.insert(names.end(), (e.*list).begin(), (e.*list).end());
+    }
+    return names;
+}
+
+}  // namespace
+
+const std::vector<MethodEntry>& Methods()
+{
+    static const std::vector<MethodEntry> methods = MakeMethods();
+    return methods;
+}
+
+const MethodEntry& FindMethod(ChangeMethod method)
+{
+    for (const MethodEntry& e : Methods())
+    {
+        if (std::find(e.methods.begin(), e.methods.end(), method) != e.methods.end())
+        {
+            return e;
+        }
+    }
+    throw Exception("method " + std::to_string(int(method)) + " is not in the registry");
+}
+
+bool MethodSpec::isLinear() const noexcept
+{
+    for (const MethodEntry& e : Methods())
+    {
+        if (std::find(e.methods.begin(), e.methods.end(), method) != e.methods.end())
+        {
+            return e.kernel == MethodKernel::MATRIX;
+        }
+    }
+    return false;
+}
+
+MethodSpec ParseMethod(const std::string& name)
+{
+    const std::string n = Lower(name);
+    MethodSpec m;
+    m.name = n;
+    for (const MethodEntry& e : Methods())
+    {
+        if (e.parse(n, m))
+        {
+            return m;
+        }
+    }
+    std::string choices;
+    for (const MethodEntry& e : Methods())
+    {
+        choices += (choices.empty() ? "" : ", ") + std::string(e.syntax);
+    }
+    throw Exception("unknown method '" + name + "' (" + choices + ")");
+}
+
+const std::vector<std::string>& LinearMethodNames()
+{
+    static const std::vector<std::string> names = Collect(&MethodEntry::configDefaults);
+    return names;
+}
+
+const std::vector<std::string>& AllMethodNames()
+{
+    static const std::vector<std::string> names = Collect(&MethodEntry::accuracyDefaults);
+    return names;
+}
+
+std::string MethodSyntax()
+{
+    std::string out;
+    for (const MethodEntry& e : Methods())
+    {
+        if (e.kernel == MethodKernel::SPECTRAL)
+        {
+            continue;  // the reference, not an image method
+        }
+        out += (out.empty() ? "" : ", ") + std::string(e.syntax) +
+               (e.needsCamera ? " (with {camera})" : "");
+    }
+    return out;
+}
+
+std::string DescribeMethod(const MethodSpec& m)
+{
+    return FindMethod(m.method).describe(m);
+}
+
+}  // namespace bandlight
