@@ -99,7 +99,7 @@ PackageResult MakePackage(const PackageRequest& request, Reporter&)
     options.methods = LinearMethodNames();
     const ConfigPackage package = BuildConfig(options);
     ConfigOptions litOptions = options;
-    litOptions.plates = Plates{PlateConvention::LIT, AdaptationMethod::CAT02};
+    litOptions.plates = Plates::Lit();
     const ConfigPackage litPackage = BuildConfig(litOptions);
     // The configs, their LUTs and every image are one set: a failing run
     // leaves the previous package as it was.

@@ -291,7 +291,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                     if (o.measureMismatch && plates.balanced())
                     {
                         litLooks = std::make_shared<Relighter>(
-                            from, to, WithPlates(parsed, Plates{}, o), working, o.observer);
+                            from, to, WithPlates(parsed, Plates::Lit(), o), working, o.observer);
                     }
                     for (const Source& source : sources)
                     {

@@ -28,12 +28,16 @@ enum class PlateConvention
 };
 
 /// A plate convention with the chromatic adaptation that did the balancing.
+/// The default is defaults::PLATES (balanced, CAT02), as every face has it.
 struct Plates
 {
-    PlateConvention convention = PlateConvention::LIT;
+    PlateConvention convention = PlateConvention::BALANCED;
     /// CAT02 is what rawtoaces balances with; Bradford is common in
     /// camera vendors' IDTs and ICC profiles.
     AdaptationMethod adaptation = AdaptationMethod::CAT02;
+
+    /// Lit plates: the physical change between two lights, no balance.
+    static Plates Lit() noexcept { return {PlateConvention::LIT, AdaptationMethod::CAT02}; }
 
     bool balanced() const noexcept { return convention == PlateConvention::BALANCED; }
     /// "lit" or "balanced-cat02" / "balanced-bradford": for reports and JSON.

@@ -322,16 +322,9 @@ Floats for one colour (3,), arrays (...) for (..., 3).
         "cri",
         [](const py::object& illuminant)
         {
-            const jobs::CriResult result = jobs::MakeCri(ToLight(illuminant));
-            const ColourRendering& cr = result.rendering;
-            py::dict d;
-            d["illuminant"] = result.illuminant;
-            d["cct_K"] = cr.cctK;
-            d["duv"] = cr.duv;
-            d["Ra"] = cr.ra;
-            d["R"] = std::vector<double>(cr.r.begin(), cr.r.end());
-            d["outside_duv_tolerance"] = cr.outsideTolerance;
-            return d;
+            // The command's document, through the one job.
+            return py::module_::import("json").attr("loads")(
+                jobs::CriDocument(jobs::MakeCri(ToLight(illuminant))));
         },
         py::arg("illuminant"), R"doc(
 CIE 13.3-1995 colour rendering of a light, as ``bandlight cri --json``:

@@ -114,6 +114,13 @@ TEST_CASE("the defaults table is what the faces start from", "[jobs]")
     CHECK_THROWS_AS(jobs::CheckedLutSize(130, "lut_size"), ParameterError);
     CHECK(jobs::SplitList(defaults::CONFIG_ILLUMINANTS) ==
           std::vector<std::string>{"A", "C", "D65", "F2", "F11"});
+    // The C++ types default as the table says: a MethodSpec is for balanced
+    // plates, as the command's and Python's are.
+    const Plates table = ParsePlates(defaults::PLATES, defaults::ADAPTATION);
+    CHECK(Plates{}.convention == table.convention);
+    CHECK(Plates{}.adaptation == table.adaptation);
+    CHECK(ParseMethod("bradford").plates.balanced());
+    CHECK_FALSE(Plates::Lit().balanced());
     const jobs::RelightRequest relight;
     CHECK(relight.method == "bradford");
     CHECK(relight.working().name == "acescg");

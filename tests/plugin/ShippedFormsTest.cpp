@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "transforms/LitMethod.h"
+
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
 
@@ -44,7 +46,7 @@ TEST_CASE("Shipped non-linear looks: the LUT against the native form, at every e
     const RgbSpace& ws = FindRgbSpace("acescg");
     for (const char* method : {"rootpoly", "upsample"})
     {
-        const MethodSpec m = ParseMethod(method);
+        const MethodSpec m = test::LitMethod(method);
         const Relighter native(L("A"), L("D65"), m, ws);
         const auto cpu = OCIO::Config::CreateRaw()
                              ->getProcessor(IlluminantChangeTransform(L("A"), L("D65"), m, ws,

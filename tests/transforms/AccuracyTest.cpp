@@ -29,7 +29,7 @@ TEST_CASE("On the held-out colours the best method beats Bradford and band3",
           "[transforms][accuracy]")
 {
     AccuracyOptions o;
-    o.plates = {Plates{}};  // lit: the counts below are for one convention
+    o.plates = {Plates::Lit()};  // lit: the counts below are for one convention
     for (const char* n : {"A", "F2", "F11", "D65"})
     {
         o.lights.push_back({n, BuiltinIlluminant(n)});
@@ -68,7 +68,7 @@ TEST_CASE("On the held-out colours the best method beats Bradford and band3",
 TEST_CASE("Accuracy rows carry mean <= p95 <= max and the worst sample", "[transforms][accuracy]")
 {
     AccuracyOptions o;
-    o.plates = {Plates{}};  // lit: the counts below are for one convention
+    o.plates = {Plates::Lit()};  // lit: the counts below are for one convention
     o.lights = {{"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}};
     o.methods = {"bradford", "band3"};
     o.sets = {AllTcs(), RandomSmoothSet(20, 5, "random20")};
@@ -93,7 +93,7 @@ TEST_CASE("The exposure sweep: invariant methods score alike at every level, shi
           "[transforms][accuracy]")
 {
     AccuracyOptions o;
-    o.plates = {Plates{}};  // lit: the counts below are for one convention
+    o.plates = {Plates::Lit()};  // lit: the counts below are for one convention
     o.lights = {{"F11", BuiltinIlluminant("F11")}, {"D65", BuiltinIlluminant("D65")}};
     o.methods = {"bradford", "rootpoly", "upsample"};
     o.sets = {HeldOutTcs()};
@@ -133,7 +133,7 @@ TEST_CASE("The exposure sweep: invariant methods score alike at every level, shi
 TEST_CASE("Cross-validation and the floor", "[transforms][accuracy]")
 {
     AccuracyOptions o;
-    o.plates = {Plates{}};  // lit: the counts below are for one convention
+    o.plates = {Plates::Lit()};  // lit: the counts below are for one convention
     o.lights = {{"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}};
     o.methods = {"bradford", "fit3x3", "rootpoly"};
     o.sets = {HeldOutTcs(), RandomSmoothSet(30, 9, "random30")};

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
+#include "transforms/LitMethod.h"
+
 #include <Eigen/LU>
 
 #include "spectral/Exception.h"
@@ -37,7 +39,7 @@ TEST_CASE("Chromatic adaptations and band3-wp map the source white exactly", "[t
             for (const char* method : {"vonkries", "bradford", "cat02", "band3-wp", "band6-wp"})
             {
                 INFO(space << " " << method << " " << from << " → " << to);
-                const Mat3 m = IlluminantChangeMatrix(L(from), L(to), ParseMethod(method), ws);
+                const Mat3 m = IlluminantChangeMatrix(L(from), L(to), test::LitMethod(method), ws);
                 CHECK((m * WhiteRgb(L(from), ws) - WhiteRgb(L(to), ws)).norm() < 1e-12);
             }
         }
@@ -49,7 +51,7 @@ TEST_CASE("band3 is the lecture's diagonal in band space, keeping the white's lu
 {
     const RgbSpace& ws = FindRgbSpace("acescg");
     const Light a = L("A"), d65 = L("D65");
-    const Mat3 m = IlluminantChangeMatrix(a, d65, ParseMethod("band3"), ws);
+    const Mat3 m = IlluminantChangeMatrix(a, d65, test::LitMethod("band3"), ws);
     // In band space the matrix is diagonal with the ratios I(D65)/I(A), up to one scale.
     const Eigen::MatrixXd toBand = WorkingToBandMatrix(BandSet::Lecture(), ws);
     const Eigen::MatrixXd fromBand = BandToWorkingMatrix(BandSet::Lecture(), ws);
@@ -73,7 +75,7 @@ TEST_CASE("band3 and band3-wp agree when the lights are the same", "[transforms]
     const RgbSpace& ws = FindRgbSpace("acescg");
     for (const char* method : {"none", "vonkries", "bradford", "band3", "band3-wp", "band10"})
     {
-        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), ParseMethod(method), ws).isIdentity(1e-12));
+        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), test::LitMethod(method), ws).isIdentity(1e-12));
     }
 }
 
@@ -95,11 +97,11 @@ TEST_CASE("Method names", "[transforms]")
     // The same edges as band3 give band3's matrix; other edges another one.
     const Light a{"A", BuiltinIlluminant("A")}, d{"D65", BuiltinIlluminant("D65")};
     const RgbSpace& ws = FindRgbSpace("acescg");
-    CHECK((IlluminantChangeMatrix(a, d, ParseMethod("bands400-500-600-700"), ws) -
-           IlluminantChangeMatrix(a, d, ParseMethod("band3"), ws))
+    CHECK((IlluminantChangeMatrix(a, d, test::LitMethod("bands400-500-600-700"), ws) -
+           IlluminantChangeMatrix(a, d, test::LitMethod("band3"), ws))
               .norm() < 1e-12);
-    CHECK((IlluminantChangeMatrix(a, d, ParseMethod("bands380-480-560-780"), ws) -
-           IlluminantChangeMatrix(a, d, ParseMethod("band3"), ws))
+    CHECK((IlluminantChangeMatrix(a, d, test::LitMethod("bands380-480-560-780"), ws) -
+           IlluminantChangeMatrix(a, d, test::LitMethod("band3"), ws))
               .norm() > 1e-3);
     CHECK_THROWS_WITH(ParseMethod("bandx"), Contains("unknown method 'bandx'"));
     CHECK_THROWS_WITH(ParseMethod("magic"), Contains("unknown method 'magic'"));
@@ -117,7 +119,7 @@ TEST_CASE("An illuminant with an empty band gives a clear error", "[transforms]"
     }
     const Light green{"G", Spectrum(380.0, 5.0, v)};
     CHECK_THROWS_WITH(
-        IlluminantChangeMatrix(green, L("D65"), ParseMethod("band3"), FindRgbSpace("acescg")),
+        IlluminantChangeMatrix(green, L("D65"), test::LitMethod("band3"), FindRgbSpace("acescg")),
         Contains("illuminant G has no power in band VB"));
 }
 

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "transforms/LitMethod.h"
+
 #include <Eigen/LU>
 
 #include "spectral/CameraFile.h"
@@ -136,7 +138,7 @@ TEST_CASE("A balanced look is the lit look between the balance's inverse and the
     for (const char* method : {"bradford", "band3", "fit3x3", "rootpoly", "upsample"})
     {
         INFO(method);
-        const Relighter lit(L("A"), L("D65"), ParseMethod(method), ws);
+        const Relighter lit(L("A"), L("D65"), test::LitMethod(method), ws);
         const Relighter bal(L("A"), L("D65"), Balanced(method), ws);
         for (const NamedSpectrum& t : TestColourSamples())
         {

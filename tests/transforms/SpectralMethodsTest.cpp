@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
+#include "transforms/LitMethod.h"
+
 #include <Eigen/LU>
 
 #include "spectral/Exception.h"
@@ -39,7 +41,7 @@ TEST_CASE("fit3x3, prefilter and metamer map S1's white to S2's", "[transforms][
         for (const char* method : {"fit3x3", "prefilter", "metamer"})
         {
             INFO(method << " " << from << " → " << to);
-            const Mat3 m = IlluminantChangeMatrix(L(from), L(to), ParseMethod(method), Working());
+            const Mat3 m = IlluminantChangeMatrix(L(from), L(to), test::LitMethod(method), Working());
             CHECK((m * r1.white() - r2.white()).norm() < 1e-6);
         }
     }
@@ -49,9 +51,9 @@ TEST_CASE("fit3x3 beats Bradford on the colours it was fitted on", "[transforms]
 {
     const SurfaceRenderer r1(BuiltinIlluminant("F11"), Working());
     const SurfaceRenderer r2(BuiltinIlluminant("D65"), Working());
-    const Mat3 fit = IlluminantChangeMatrix(L("F11"), L("D65"), ParseMethod("fit3x3"), Working());
+    const Mat3 fit = IlluminantChangeMatrix(L("F11"), L("D65"), test::LitMethod("fit3x3"), Working());
     const Mat3 brad =
-        IlluminantChangeMatrix(L("F11"), L("D65"), ParseMethod("bradford"), Working());
+        IlluminantChangeMatrix(L("F11"), L("D65"), test::LitMethod("bradford"), Working());
     double eFit = 0.0, eBrad = 0.0;
     for (const NamedSpectrum& s : TrainingSet().samples)
     {
@@ -100,7 +102,7 @@ TEST_CASE("upsample: remittances in [0, 1], RGB round trip within 0.02 ΔE76 in 
 
 TEST_CASE("upsample keeps white, scales HDR and never makes NaN", "[transforms][methods]")
 {
-    const Relighter relight(L("A"), L("D65"), ParseMethod("upsample"), Working());
+    const Relighter relight(L("A"), L("D65"), test::LitMethod("upsample"), Working());
     CHECK_FALSE(relight.isLinear());
     const SurfaceRenderer r1(BuiltinIlluminant("A"), Working());
     const SurfaceRenderer r2(BuiltinIlluminant("D65"), Working());
@@ -118,9 +120,9 @@ TEST_CASE("upsample keeps white, scales HDR and never makes NaN", "[transforms][
 
 TEST_CASE("spectral is the reference, not an image transform", "[transforms][methods]")
 {
-    CHECK_THROWS_WITH(Relighter(L("A"), L("D65"), ParseMethod("spectral"), Working()),
+    CHECK_THROWS_WITH(Relighter(L("A"), L("D65"), test::LitMethod("spectral"), Working()),
                       Contains("needs the spectra of the surfaces"));
-    CHECK_THROWS_WITH(IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("upsample"), Working()),
+    CHECK_THROWS_WITH(IlluminantChangeMatrix(L("A"), L("D65"), test::LitMethod("upsample"), Working()),
                       Contains("is not one 3x3"));
     CHECK(AllMethodNames().size() == 14);
 }
