@@ -13,6 +13,7 @@
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
 #include "transforms/IlluminantChange.h"
+#include "transforms/PixelKernels.h"
 #include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
@@ -117,35 +118,85 @@ static void BM_ApplyLattice33(benchmark::State& state)
 }
 BENCHMARK(BM_ApplyLattice33)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// A method applied natively (Relighter: the guard, then the method) to a
-/// packed 1920×1080 RGB float buffer, on state.range(0) threads.
-static void ApplyNative(benchmark::State& state, const char* method, bool balanced = false)
+/// A UHD float image of `channels` channels, filled once.
+std::vector<float>& UhdImage(size_t channels)
 {
-    MethodSpec spec = ParseMethod(method);
-    if (balanced)
+    static std::vector<float> rgb, rgba;
+    std::vector<float>& v = channels == 3 ? rgb : rgba;
+    if (v.empty())
     {
-        spec.plates = ParsePlates("balanced", "cat02");
+        v.resize(size_t(kWidth) * size_t(kHeight) * channels);
+        for (size_t i = 0; i < v.size(); ++i)
+        {
+            v[i] = float((i * 2654435761u) % 1000u) * 0.001f;
+        }
     }
-    const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}, spec,
-                      FindRgbSpace("acescg"));
-    std::vector<float> px(size_t(1920) * 1080 * 3);
-    for (size_t i = 0; i < px.size(); ++i)
-    {
-        px[i] = float((i * 2654435761u) % 1000u) * 0.001f;
-    }
+    return v;
+}
+
+/// The ceiling for the native kernels: copying the same UHD buffer (3 or
+/// 4 channels) on state.range(0) threads, in the same run.
+static void CopyUhd(benchmark::State& state, size_t channels)
+{
+    const std::vector<float>& src = UhdImage(channels);
+    std::vector<float> dst(src.size());
+    const size_t threads = size_t(state.range(0));
     for (auto _ : state)
     {
-        r.apply(px.data(), px.size() / 3, int(state.range(0)));
+        std::vector<std::thread> pool;
+        const size_t chunk = src.size() / threads;
+        for (size_t t = 0; t < threads; ++t)
+        {
+            pool.emplace_back([&, t]
+                              { std::memcpy(&dst[chunk * t], &src[chunk * t], chunk * 4); });
+        }
+        for (auto& th : pool)
+        {
+            th.join();
+        }
         benchmark::ClobberMemory();
     }
-    state.SetItemsProcessed(int64_t(state.iterations()) * 1920 * 1080);
+    state.SetItemsProcessed(int64_t(state.iterations()) * kWidth * kHeight);
+    state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(src.size()) * 4 * 2);
+}
+static void BM_CopyUhdRgb(benchmark::State& state)
+{
+    CopyUhd(state, 3);
+}
+BENCHMARK(BM_CopyUhdRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+static void BM_CopyUhdRgba(benchmark::State& state)
+{
+    CopyUhd(state, 4);
+}
+BENCHMARK(BM_CopyUhdRgba)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// A method applied natively (Relighter::apply: the SIMD kernel chosen for
+/// this CPU, in place) to the UHD float image of `channels` channels, on
+/// state.range(0) threads.
+static void ApplyNative(benchmark::State& state, const char* method, bool balanced,
+                        size_t channels = 3)
+{
+    MethodSpec spec = ParseMethod(method);
+    spec.plates = balanced ? ParsePlates("balanced", "cat02") : Plates::Lit();
+    const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}, spec,
+                      FindRgbSpace("acescg"));
+    std::vector<float> px = UhdImage(channels);
+    const size_t pixels = size_t(kWidth) * size_t(kHeight);
+    for (auto _ : state)
+    {
+        r.apply(px.data(), pixels, channels, int(state.range(0)));
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(pixels));
+    state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(px.size()) * 4 * 2);
+    state.SetLabel(PixelKernelTarget());
 }
 
 /// rootpoly applied natively (what `bandlight apply --method rootpoly` and
-/// the C++ API do): the guard and the vectorised degree-2 root polynomial.
+/// the C++ API do): the guard and the degree-2 root polynomial.
 static void BM_NativeRootPoly(benchmark::State& state)
 {
-    ApplyNative(state, "rootpoly");
+    ApplyNative(state, "rootpoly", false);
 }
 BENCHMARK(BM_NativeRootPoly)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -157,12 +208,24 @@ static void BM_NativeRootPolyBalanced(benchmark::State& state)
 }
 BENCHMARK(BM_NativeRootPolyBalanced)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// The band3 3×3 through the same native path, in the same run.
+/// Degree 3: three cube roots (Newton in float) and 13 terms.
+static void BM_NativeRootPoly3(benchmark::State& state)
+{
+    ApplyNative(state, "rootpoly3", false);
+}
+BENCHMARK(BM_NativeRootPoly3)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The guarded 3×3 (bradford), RGB and RGBA.
 static void BM_NativeMatrixRgb(benchmark::State& state)
 {
-    ApplyNative(state, "band3");
+    ApplyNative(state, "bradford", false);
 }
 BENCHMARK(BM_NativeMatrixRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+static void BM_NativeMatrixRgba(benchmark::State& state)
+{
+    ApplyNative(state, "bradford", false, 4);
+}
+BENCHMARK(BM_NativeMatrixRgba)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// rootpoly as a config's look: log2 shaper, 65³ LUT, inverse shaper.
 static void BM_ApplyRootPolyLut65(benchmark::State& state)

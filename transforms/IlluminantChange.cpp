@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <iterator>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -227,6 +228,13 @@ struct Relighter::Spectral
 Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& method,
                      const RgbSpace& working, Observer observer)
 {
+    build(from, to, method, working, observer);
+    prepareKernels();
+}
+
+void Relighter::build(const Light& from, const Light& to, const MethodSpec& method,
+                      const RgbSpace& working, Observer observer)
+{
     if (method.method == ChangeMethod::SPECTRAL)
     {
         throw Exception(
@@ -364,16 +372,77 @@ void Relighter::apply(Vec3* rgb, size_t count) const
     }
 }
 
+void Relighter::prepareKernels()
+{
+    for (int r = 0; r < 3; ++r)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            m_matrixF.m[3 * r + c] = float(m_matrix(r, c));
+            m_rootpolyKernel.input.m[3 * r + c] = float(m_pre(r, c));
+        }
+    }
+    m_rootpolyKernel.hasInput = m_hasPre;
+    if (m_rootpoly)
+    {
+        m_rootpolyKernel.degree = m_rootpoly->degree();
+        std::memcpy(m_rootpolyKernel.coefficients, m_rootpoly->floats(),
+                    sizeof m_rootpolyKernel.coefficients);
+    }
+}
+
 void Relighter::apply(float* rgb, size_t count, int threads) const
 {
-    if (!m_hasPre && !m_rootpoly && m_linear)
+    apply(rgb, count, 3, threads);
+}
+
+void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) const
+{
+    if (stride < 3)
     {
-        applyAfterInput(rgb, count, threads);  // guards each pixel itself
+        throw Exception("Relighter: pixels of " + std::to_string(stride) +
+                        " channels (at least R, G, B)");
+    }
+    if (m_linear)
+    {
+        // The guarded 3×3: bound by memory, so threads only for big buffers.
+        ParallelFor(count, count < 65536 ? 1 : threads,
+                    [&](size_t begin, size_t end)
+                    { GuardedMatrix(m_matrixF, pixels + begin * stride, end - begin, stride); });
         return;
     }
+    if (m_rootpoly)
+    {
+        ParallelFor(count, count < 65536 ? 1 : threads,
+                    [&](size_t begin, size_t end) {
+                        RootPolyPixels(m_rootpolyKernel, pixels + begin * stride, end - begin,
+                                       stride);
+                    });
+        return;
+    }
+    if (stride != 3)
+    {
+        // upsample works on packed triples: gather, relight, scatter.
+        ParallelFor(count, count < 1024 ? 1 : threads,
+                    [&](size_t begin, size_t end)
+                    {
+                        std::vector<float> rgb(3 * (end - begin));
+                        for (size_t i = begin; i < end; ++i)
+                        {
+                            std::copy_n(pixels + i * stride, 3, &rgb[3 * (i - begin)]);
+                        }
+                        apply(rgb.data(), end - begin, 3, 1);
+                        for (size_t i = begin; i < end; ++i)
+                        {
+                            std::copy_n(&rgb[3 * (i - begin)], 3, pixels + i * stride);
+                        }
+                    });
+        return;
+    }
+    float* rgb = pixels;
     // The guard (written so NaN goes to the lower bound: (-G < NaN) is
     // false, and the loop vectorises), the input matrix, then the method.
-    ParallelFor(count, count < (m_rootpoly ? 65536 : 1024) ? 1 : threads,
+    ParallelFor(count, count < 1024 ? 1 : threads,
                 [&](size_t begin, size_t end)
                 {
                     const float lo = float(-PIXEL_GUARD), hi = float(PIXEL_GUARD);

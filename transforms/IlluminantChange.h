@@ -12,6 +12,7 @@
 #include "spectral/SpectrumIO.h"
 #include "transforms/BandSet.h"
 #include "transforms/Camera.h"
+#include "transforms/PixelKernels.h"
 #include "transforms/Plates.h"
 #include "transforms/RootPolynomial.h"
 
@@ -157,8 +158,13 @@ public:
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
     Vec3 apply(const Vec3& rgb) const;
     /// `count` interleaved RGB float triples in place, on `threads` threads
-    /// (0: all cores), neighbours warm-starting each other's fits.
+    /// (0: all cores), neighbours warm-starting each other's fits. The 3×3
+    /// and rootpoly run in float through the SIMD kernels
+    /// (transforms/PixelKernels.h), upsample per pixel in double.
     void apply(float* rgb, size_t count, int threads = 0) const;
+    /// The same on pixels of `stride` floats (3: RGB, 4: RGBA; R, G, B
+    /// first, other channels unchanged).
+    void apply(float* pixels, size_t count, size_t stride, int threads) const;
 
     /// `count` pixels in double precision, in place: apply(Vec3) for each,
     /// except that upsample shares one fit among the pixels of one
@@ -183,6 +189,13 @@ private:
     Mat3 m_matrix = Mat3::Identity();
     std::unique_ptr<Spectral> m_spectral;
     std::unique_ptr<RootPolynomial> m_rootpoly;
+    /// The kernels' forms of the 3×3 and of the root polynomial (with the
+    /// input matrix folded in as the kernel's input step).
+    Matrix3f m_matrixF{};
+    RootPolyKernelData m_rootpolyKernel;
+    void build(const Light& from, const Light& to, const MethodSpec& method,
+               const RgbSpace& working, Observer observer);
+    void prepareKernels();
 };
 
 /// Working RGB → band values (N × 3): the band-space conversion, B⁺ · M.

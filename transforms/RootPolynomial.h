@@ -33,6 +33,8 @@ public:
 
     int degree() const noexcept { return m_degree; }
     const Eigen::MatrixXd& matrix() const noexcept { return m_m; }
+    /// The coefficients as floats, 3 × Terms(degree) (the rest zero).
+    const float (&floats() const noexcept)[3][13] { return m_f; }
 
     /// One pixel (the scalar reference path).
     Vec3 apply(const Vec3& rgb) const noexcept;

@@ -53,7 +53,7 @@ def main():
     default_cpp = pathlib.Path(bandlight.__file__).resolve().parents[1] / "bench_relight_cpp"
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--cpp", default=str(default_cpp), help="the bench_relight_cpp program")
-    ap.add_argument("--methods", default="band3,rootpoly")
+    ap.add_argument("--methods", default="bradford,rootpoly,rootpoly3")
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--runs", type=int, default=7)
     args = ap.parse_args()
@@ -63,10 +63,10 @@ def main():
     out = np.empty_like(source)
     print(f"{WIDTH}x{HEIGHT} float32 RGB, A -> D65 in ACEScg, median of {args.runs} runs, "
           "ns per pixel")
-    print(f"{'method':10} {'threads':>7} {'C++ API':>9} {'py in place':>12} "
-          f"{'py into out':>12} {'py new array':>13}")
+    print(f"{'method':10} {'threads':>7} {'copy':>6} {'C++ API':>9} {'py in place':>12} "
+          f"{'py into out':>12} {'py new array':>13}   (in place / copy)")
     for method in args.methods.split(","):
-        # Lit plates: the C++ API default that bench_relight_cpp times.
+        # Lit plates, as bench_relight_cpp times them.
         r = bandlight.Relighter("A", "D65", method, plates="lit")
         for threads in (int(t) for t in args.threads.split(",")):
             cpp = subprocess.run([args.cpp, method, str(threads), str(args.runs)],
@@ -83,8 +83,11 @@ def main():
             into = median_ns(lambda: r.apply(source, out=out, threads=threads), lambda: None,
                              args.runs)
             new = median_ns(lambda: r.apply(source, threads=threads), lambda: None, args.runs)
-            print(f"{method:10} {threads:7d} {float(fields['ns_per_pixel']):9.2f} "
-                  f"{in_place:12.2f} {into:12.2f} {new:13.2f}"
+            # The physical limit, in the same run: copying the same bytes
+            # (numpy's copy is one thread).
+            copy = median_ns(lambda: np.copyto(out, source), lambda: None, args.runs)
+            print(f"{method:10} {threads:7d} {copy:6.2f} {float(fields['ns_per_pixel']):9.2f} "
+                  f"{in_place:12.2f} {into:12.2f} {new:13.2f}   {copy / in_place:.2f}x"
                   + ("" if same else "   (checksums differ!)"))
 
 

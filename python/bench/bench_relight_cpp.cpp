@@ -24,8 +24,11 @@ int main(int argc, char** argv)
     constexpr size_t kPixels = size_t(3840) * 2160;
     try
     {
-        const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")},
-                          ParseMethod(method), FindRgbSpace("acescg"));
+        // Lit plates, as the Python side asks for them (plates="lit").
+        MethodSpec spec = ParseMethod(method);
+        spec.plates = Plates::Lit();
+        const Relighter r({"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}, spec,
+                          FindRgbSpace("acescg"));
         std::vector<float> pristine(3 * kPixels);
         for (size_t i = 0; i < pristine.size(); ++i)
         {

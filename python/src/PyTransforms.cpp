@@ -113,44 +113,25 @@ py::array_t<float> Apply(const PyRelighter& self, const py::object& image, int t
     const Relighter& r = *self.relighter;
     {
         py::gil_scoped_release release;
-        if (src == dst && channels == 3)
+        if (src == dst)
         {
-            // In place, packed RGB: exactly the C++ API's call.
-            r.apply(dst, pixels, threads);
+            // In place: exactly the C++ API's call, RGB or RGBA (strided).
+            r.apply(dst, pixels, channels, threads);
         }
         else
         {
-            // Copy (and gather RGB) block by block, re-light it while it is
-            // in cache, scatter it back.
+            // Copy block by block and re-light each block while it is in cache.
             const size_t blocks = (pixels + kBlockPixels - 1) / kBlockPixels;
             ParallelFor(blocks, threads,
                         [&](size_t b0, size_t b1)
                         {
-                            std::vector<float> rgb(channels == 3 ? 0 : 3 * kBlockPixels);
                             for (size_t b = b0; b < b1; ++b)
                             {
                                 const size_t p0 = b * kBlockPixels;
                                 const size_t n = std::min(kBlockPixels, pixels - p0);
-                                const float* s = src + p0 * channels;
-                                float* d = dst + p0 * channels;
-                                if (s != d)
-                                {
-                                    std::memcpy(d, s, n * channels * sizeof(float));
-                                }
-                                if (channels == 3)
-                                {
-                                    r.apply(d, n, 1);
-                                    continue;
-                                }
-                                for (size_t i = 0; i < n; ++i)
-                                {
-                                    std::memcpy(&rgb[3 * i], d + i * channels, 3 * sizeof(float));
-                                }
-                                r.apply(rgb.data(), n, 1);
-                                for (size_t i = 0; i < n; ++i)
-                                {
-                                    std::memcpy(d + i * channels, &rgb[3 * i], 3 * sizeof(float));
-                                }
+                                std::memcpy(dst + p0 * channels, src + p0 * channels,
+                                            n * channels * sizeof(float));
+                                r.apply(dst + p0 * channels, n, channels, 1);
                             }
                         });
         }
@@ -165,7 +146,8 @@ such as (height, width, 3), (height, width, 4) or (pixels, 3).
 
 Returns a new float32 array, or writes into ``out`` (a C-contiguous float32
 array of the same shape); ``out=image`` re-lights a float32 image in place,
-which for packed RGB is exactly the C++ ``Relighter::apply`` call. Other
+which is exactly the C++ ``Relighter::apply`` call (the SIMD kernel of
+this CPU for the 3x3 and rootpoly). Other
 dtypes and layouts are converted to float32 first. Runs with the GIL
 released on ``threads`` threads (0: all cores). Any input, NaN and Inf
 included, gives a finite result (NaN and Inf are clamped to +-1e16 first).

@@ -1,0 +1,286 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The pixel kernels: SIMD forms compiled once per target by Highway's
+// foreach_target, the best one chosen at run time; scalar references with
+// the same operations in the same order.
+#include "transforms/PixelKernels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "transforms/PixelKernels.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "transforms/IlluminantChange.h"
+
+// ---------------------------------------------------------------------------
+// The scalar maths, once (outside the per-target part): what every SIMD
+// lane computes, operation for operation.
+#ifndef BANDLIGHT_PIXEL_KERNELS_SCALAR
+#define BANDLIGHT_PIXEL_KERNELS_SCALAR
+namespace bandlight::kernel
+{
+
+constexpr float kGuard = float(PIXEL_GUARD);
+constexpr float kThird = 1.0f / 3.0f;
+/// The cube-root guess's offset: (127 − 127/3) · 2^23, the bias of the
+/// float exponent divided by three (Kahan's bit trick).
+constexpr int32_t kCbrtBias = 0x2a514067;
+
+/// NaN goes to the lower bound: (lo < NaN) is false.
+inline float Guard(float v) noexcept
+{
+    const float a = -kGuard < v ? v : -kGuard;
+    return kGuard < a ? kGuard : a;
+}
+
+/// Cube root of x ≥ 0 (finite): a bit-trick guess, three Newton steps.
+inline float Cbrt(float x) noexcept
+{
+    int32_t i;
+    std::memcpy(&i, &x, 4);
+    i = int32_t(float(i) * kThird) + kCbrtBias;
+    float y;
+    std::memcpy(&y, &i, 4);
+    for (int k = 0; k < 3; ++k)
+    {
+        const float t = y * y;
+        y = ((y + y) + x / t) * kThird;
+    }
+    return x > 0.0f ? y : 0.0f;
+}
+
+}  // namespace bandlight::kernel
+#endif
+
+HWY_BEFORE_NAMESPACE();
+namespace bandlight::HWY_NAMESPACE
+{
+namespace hn = hwy::HWY_NAMESPACE;
+using D = hn::ScalableTag<float>;
+using V = hn::Vec<D>;
+
+HWY_INLINE V Guard(D d, V v)
+{
+    const V lo = hn::Set(d, -kernel::kGuard), hi = hn::Set(d, kernel::kGuard);
+    const V a = hn::IfThenElse(hn::Lt(lo, v), v, lo);
+    return hn::IfThenElse(hn::Lt(hi, a), hi, a);
+}
+
+HWY_INLINE void Multiply(D d, const float* m, V& r, V& g, V& b)
+{
+    const V r0 = r, g0 = g, b0 = b;
+    r = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0]), r0), hn::Mul(hn::Set(d, m[1]), g0)),
+                hn::Mul(hn::Set(d, m[2]), b0));
+    g = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[3]), r0), hn::Mul(hn::Set(d, m[4]), g0)),
+                hn::Mul(hn::Set(d, m[5]), b0));
+    b = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[6]), r0), hn::Mul(hn::Set(d, m[7]), g0)),
+                hn::Mul(hn::Set(d, m[8]), b0));
+}
+
+HWY_INLINE V Cbrt(D d, V x)
+{
+    const hn::RebindToSigned<D> di;
+    auto i = hn::BitCast(di, x);
+    i = hn::Add(hn::ConvertTo(di, hn::Mul(hn::ConvertTo(d, i), hn::Set(d, kernel::kThird))),
+                hn::Set(di, kernel::kCbrtBias));
+    V y = hn::BitCast(d, i);
+    const V third = hn::Set(d, kernel::kThird);
+    for (int k = 0; k < 3; ++k)
+    {
+        const V t = hn::Mul(y, y);
+        y = hn::Mul(hn::Add(hn::Add(y, y), hn::Div(x, t)), third);
+    }
+    return hn::IfThenElseZero(hn::Gt(x, hn::Zero(d)), y);
+}
+
+/// Loads N pixels of `stride` floats as R, G, B planes (and the 4th channel
+/// for RGBA, written back unchanged).
+template <class F>
+HWY_INLINE void ForEachBlock(float* HWY_RESTRICT px, size_t count, size_t stride, F&& f,
+                             size_t& done)
+{
+    const D d;
+    const size_t n = hn::Lanes(d);
+    done = 0;
+    if (stride == 3)
+    {
+        for (; done + n <= count; done += n)
+        {
+            V r, g, b;
+            hn::LoadInterleaved3(d, px + 3 * done, r, g, b);
+            f(d, r, g, b);
+            hn::StoreInterleaved3(r, g, b, d, px + 3 * done);
+        }
+    }
+    else if (stride == 4)
+    {
+        for (; done + n <= count; done += n)
+        {
+            V r, g, b, a;
+            hn::LoadInterleaved4(d, px + 4 * done, r, g, b, a);
+            f(d, r, g, b);
+            hn::StoreInterleaved4(r, g, b, a, d, px + 4 * done);
+        }
+    }
+}
+
+void GuardedMatrixSimd(const float* m, float* HWY_RESTRICT px, size_t count, size_t stride,
+                       size_t* done)
+{
+    ForEachBlock(
+        px, count, stride,
+        [m](D d, V& r, V& g, V& b)
+        {
+            r = Guard(d, r);
+            g = Guard(d, g);
+            b = Guard(d, b);
+            Multiply(d, m, r, g, b);
+        },
+        *done);
+}
+
+void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t count,
+                  size_t stride, size_t* done)
+{
+    const float(*c)[13] = k->coefficients;
+    ForEachBlock(
+        px, count, stride,
+        [k, c](D d, V& r, V& g, V& b)
+        {
+            r = Guard(d, r);
+            g = Guard(d, g);
+            b = Guard(d, b);
+            if (k->hasInput)
+            {
+                Multiply(d, k->input.m, r, g, b);
+            }
+            // max(x, 0) as (0 < x ? x : 0) on every target: -0 becomes +0.
+            const V z = hn::Zero(d);
+            const V rp = hn::IfThenElse(hn::Lt(z, r), r, z), gp = hn::IfThenElse(hn::Lt(z, g), g, z),
+                    bp = hn::IfThenElse(hn::Lt(z, b), b, z);
+            V t[13] = {r, g, b, hn::Sqrt(hn::Mul(rp, gp)), hn::Sqrt(hn::Mul(gp, bp)),
+                       hn::Sqrt(hn::Mul(rp, bp))};
+            const int terms = k->degree == 3 ? 13 : 6;
+            if (terms == 13)
+            {
+                const V cr = Cbrt(d, rp), cg = Cbrt(d, gp), cb = Cbrt(d, bp);
+                t[6] = hn::Mul(hn::Mul(cr, cg), cg);
+                t[7] = hn::Mul(hn::Mul(cg, cb), cb);
+                t[8] = hn::Mul(hn::Mul(cr, cb), cb);
+                t[9] = hn::Mul(hn::Mul(cg, cr), cr);
+                t[10] = hn::Mul(hn::Mul(cb, cg), cg);
+                t[11] = hn::Mul(hn::Mul(cb, cr), cr);
+                t[12] = hn::Mul(hn::Mul(cr, cg), cb);
+            }
+            V out[3];
+            for (int o = 0; o < 3; ++o)
+            {
+                V s = hn::Mul(hn::Set(d, c[o][0]), t[0]);
+                for (int j = 1; j < terms; ++j)
+                {
+                    s = hn::Add(s, hn::Mul(hn::Set(d, c[o][j]), t[j]));
+                }
+                out[o] = s;
+            }
+            r = out[0];
+            g = out[1];
+            b = out[2];
+        },
+        *done);
+}
+
+const char* TargetName()
+{
+    return hwy::TargetName(HWY_TARGET);
+}
+
+}  // namespace bandlight::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace bandlight
+{
+HWY_EXPORT(GuardedMatrixSimd);
+HWY_EXPORT(RootPolySimd);
+HWY_EXPORT(TargetName);
+
+void GuardedMatrixReference(const Matrix3f& k, float* px, size_t count, size_t stride) noexcept
+{
+    const float* m = k.m;
+    for (size_t i = 0; i < count; ++i)
+    {
+        float* p = px + i * stride;
+        const float r = kernel::Guard(p[0]), g = kernel::Guard(p[1]), b = kernel::Guard(p[2]);
+        p[0] = (m[0] * r + m[1] * g) + m[2] * b;
+        p[1] = (m[3] * r + m[4] * g) + m[5] * b;
+        p[2] = (m[6] * r + m[7] * g) + m[8] * b;
+    }
+}
+
+void RootPolyPixelsReference(const RootPolyKernelData& k, float* px, size_t count,
+                             size_t stride) noexcept
+{
+    const int terms = k.degree == 3 ? 13 : 6;
+    for (size_t i = 0; i < count; ++i)
+    {
+        float* p = px + i * stride;
+        float r = kernel::Guard(p[0]), g = kernel::Guard(p[1]), b = kernel::Guard(p[2]);
+        if (k.hasInput)
+        {
+            const float* m = k.input.m;
+            const float r0 = r, g0 = g, b0 = b;
+            r = (m[0] * r0 + m[1] * g0) + m[2] * b0;
+            g = (m[3] * r0 + m[4] * g0) + m[5] * b0;
+            b = (m[6] * r0 + m[7] * g0) + m[8] * b0;
+        }
+        const float rp = 0.0f < r ? r : 0.0f, gp = 0.0f < g ? g : 0.0f, bp = 0.0f < b ? b : 0.0f;
+        float t[13] = {r, g, b, std::sqrt(rp * gp), std::sqrt(gp * bp), std::sqrt(rp * bp)};
+        if (terms == 13)
+        {
+            const float cr = kernel::Cbrt(rp), cg = kernel::Cbrt(gp), cb = kernel::Cbrt(bp);
+            t[6] = (cr * cg) * cg;
+            t[7] = (cg * cb) * cb;
+            t[8] = (cr * cb) * cb;
+            t[9] = (cg * cr) * cr;
+            t[10] = (cb * cg) * cg;
+            t[11] = (cb * cr) * cr;
+            t[12] = (cr * cg) * cb;
+        }
+        for (int o = 0; o < 3; ++o)
+        {
+            float s = k.coefficients[o][0] * t[0];
+            for (int j = 1; j < terms; ++j)
+            {
+                s = s + k.coefficients[o][j] * t[j];
+            }
+            p[o] = s;
+        }
+    }
+}
+
+void GuardedMatrix(const Matrix3f& m, float* px, size_t count, size_t stride) noexcept
+{
+    size_t done = 0;
+    HWY_DYNAMIC_DISPATCH(GuardedMatrixSimd)(m.m, px, count, stride, &done);
+    // The tail (and strides the SIMD form does not take): the same maths.
+    GuardedMatrixReference(m, px + done * stride, count - done, stride);
+}
+
+void RootPolyPixels(const RootPolyKernelData& k, float* px, size_t count, size_t stride) noexcept
+{
+    size_t done = 0;
+    HWY_DYNAMIC_DISPATCH(RootPolySimd)(&k, px, count, stride, &done);
+    RootPolyPixelsReference(k, px + done * stride, count - done, stride);
+}
+
+const char* PixelKernelTarget() noexcept
+{
+    return HWY_DYNAMIC_DISPATCH(TargetName)();
+}
+
+}  // namespace bandlight
+#endif
