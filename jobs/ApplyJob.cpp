@@ -25,6 +25,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     // rootpoly without a config is applied natively: a few ns a pixel, no
     // LUT between the fit and the pixels.
     std::function<void(float*, size_t)> native;
+    std::optional<ClampMatrixKernel> kernel;
     if (!r.look.empty())
     {
         if (r.config.empty())
@@ -48,6 +49,12 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         t->setLooks(r.look.c_str());
         processor = config->getProcessor(t);
         result.applied = "look " + r.look;
+        // A look whose optimised processor is a clamp and a matrix (any
+        // config's, read back from OCIO) runs on the native kernel.
+        if (const std::optional<ClampMatrixKernel> k = NativeClampMatrix(processor))
+        {
+            kernel = *k;
+        }
     }
     else
     {
@@ -74,11 +81,17 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
                 relight.src, relight.dst, method, relight.working(), observer);
             processor = OCIO::Config::CreateRaw()->getProcessor(t);
             result.applied = t->getFormatMetadata().getName();
+            // The linear methods: their guarded 3×3, natively.
+            kernel = NativeClampMatrix(processor);
         }
     }
     const auto applyOne = [&](const std::string& in, const std::string& out)
     {
-        if (native)
+        if (kernel)
+        {
+            ApplyToImage(*kernel, in, out, r.threads, result.applied);
+        }
+        else if (native)
         {
             ApplyToImage(native, in, out, r.threads, result.applied);
         }
@@ -90,6 +103,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         }
     };
 
+    result.native = kernel.has_value() || bool(native);
     if (r.frames.empty())
     {
         if (HasFramePattern(r.input))

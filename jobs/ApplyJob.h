@@ -31,6 +31,9 @@ struct ApplyResult
 {
     std::string applied;  ///< what was applied: "look band3_A_to_D65", a look name
     size_t frames = 0;    ///< frames written (1 for a single image)
+    /// Applied by bandlight's own kernel (a clamp-and-matrix processor,
+    /// rootpoly) rather than by OpenColorIO's CPU processor.
+    bool native = false;
     bool sequence = false;
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "jobs/ImageFiles.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/RgbSpaces.h"
+#include "transforms/PixelKernels.h"
 
 namespace bandlight::jobs
 {
@@ -32,6 +34,19 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
 void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
                   const std::string& in, const std::string& out, int threads,
                   const std::string& note);
+
+/// The same with a clamp-and-matrix kernel, natively (the SIMD kernel of
+/// this CPU on the file's own pixel stride when R, G, B lead each pixel).
+void ApplyToImage(const ClampMatrixKernel& kernel, const std::string& in, const std::string& out,
+                  int threads, const std::string& note);
+
+/// The clamp and affine 3×3 an optimised OCIO processor consists of, when
+/// it is nothing else: a RangeTransform that only clamps (both bounds
+/// finite, in = out) followed by a MatrixTransform that leaves alpha alone.
+/// Any other op, a matrix without a clamp (NaN would reach OCIO's 4×4 and
+/// its alpha), and any look that optimises to more, gives nullopt: it goes
+/// through OCIO.
+std::optional<ClampMatrixKernel> NativeClampMatrix(const OCIO::ConstProcessorRcPtr& processor);
 
 /// Applies a processor in place to an interleaved float image with RGB in
 /// channels rgb[0..2] and `channels` channels per pixel, split by rows over

@@ -63,11 +63,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 using D = hn::ScalableTag<float>;
 using V = hn::Vec<D>;
 
-HWY_INLINE V Guard(D d, V v)
+HWY_INLINE V Clamp(V lo, V hi, V v)
 {
-    const V lo = hn::Set(d, -kernel::kGuard), hi = hn::Set(d, kernel::kGuard);
     const V a = hn::IfThenElse(hn::Lt(lo, v), v, lo);
     return hn::IfThenElse(hn::Lt(hi, a), hi, a);
+}
+
+HWY_INLINE V Guard(D d, V v)
+{
+    return Clamp(hn::Set(d, -kernel::kGuard), hn::Set(d, kernel::kGuard), v);
 }
 
 HWY_INLINE void Multiply(D d, const float* m, V& r, V& g, V& b)
@@ -128,17 +132,27 @@ HWY_INLINE void ForEachBlock(float* HWY_RESTRICT px, size_t count, size_t stride
     }
 }
 
-void GuardedMatrixSimd(const float* m, float* HWY_RESTRICT px, size_t count, size_t stride,
-                       size_t* done)
+void ClampMatrixSimd(const ClampMatrixKernel* k, float* HWY_RESTRICT px, size_t count,
+                     size_t stride, size_t* done)
 {
     ForEachBlock(
         px, count, stride,
-        [m](D d, V& r, V& g, V& b)
+        [k](D d, V& r, V& g, V& b)
         {
-            r = Guard(d, r);
-            g = Guard(d, g);
-            b = Guard(d, b);
-            Multiply(d, m, r, g, b);
+            if (k->clamp)
+            {
+                const V lo = hn::Set(d, k->lo), hi = hn::Set(d, k->hi);
+                r = Clamp(lo, hi, r);
+                g = Clamp(lo, hi, g);
+                b = Clamp(lo, hi, b);
+            }
+            Multiply(d, k->m.m, r, g, b);
+            if (k->hasOffset)
+            {
+                r = hn::Add(r, hn::Set(d, k->offset[0]));
+                g = hn::Add(g, hn::Set(d, k->offset[1]));
+                b = hn::Add(b, hn::Set(d, k->offset[2]));
+            }
         },
         *done);
 }
@@ -204,21 +218,59 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace bandlight
 {
-HWY_EXPORT(GuardedMatrixSimd);
+HWY_EXPORT(ClampMatrixSimd);
 HWY_EXPORT(RootPolySimd);
 HWY_EXPORT(TargetName);
 
-void GuardedMatrixReference(const Matrix3f& k, float* px, size_t count, size_t stride) noexcept
+void ClampMatrixReference(const ClampMatrixKernel& k, float* px, size_t count,
+                          size_t stride) noexcept
 {
-    const float* m = k.m;
+    const float* m = k.m.m;
+    const auto clamp = [&k](float v)
+    {
+        if (!k.clamp)
+        {
+            return v;
+        }
+        const float a = k.lo < v ? v : k.lo;
+        return k.hi < a ? k.hi : a;
+    };
     for (size_t i = 0; i < count; ++i)
     {
         float* p = px + i * stride;
-        const float r = kernel::Guard(p[0]), g = kernel::Guard(p[1]), b = kernel::Guard(p[2]);
+        const float r = clamp(p[0]), g = clamp(p[1]), b = clamp(p[2]);
         p[0] = (m[0] * r + m[1] * g) + m[2] * b;
         p[1] = (m[3] * r + m[4] * g) + m[5] * b;
         p[2] = (m[6] * r + m[7] * g) + m[8] * b;
+        if (k.hasOffset)
+        {
+            p[0] = p[0] + k.offset[0];
+            p[1] = p[1] + k.offset[1];
+            p[2] = p[2] + k.offset[2];
+        }
     }
+}
+
+ClampMatrixKernel GuardedMatrixKernel(const Matrix3f& m) noexcept
+{
+    ClampMatrixKernel k;
+    k.lo = -kernel::kGuard;
+    k.hi = kernel::kGuard;
+    k.m = m;
+    return k;
+}
+
+void GuardedMatrixReference(const Matrix3f& m, float* px, size_t count, size_t stride) noexcept
+{
+    ClampMatrixReference(GuardedMatrixKernel(m), px, count, stride);
+}
+
+void ClampMatrix(const ClampMatrixKernel& k, float* px, size_t count, size_t stride) noexcept
+{
+    size_t done = 0;
+    HWY_DYNAMIC_DISPATCH(ClampMatrixSimd)(&k, px, count, stride, &done);
+    // The tail (and strides the SIMD form does not take): the same maths.
+    ClampMatrixReference(k, px + done * stride, count - done, stride);
 }
 
 void RootPolyPixelsReference(const RootPolyKernelData& k, float* px, size_t count,
@@ -264,10 +316,7 @@ void RootPolyPixelsReference(const RootPolyKernelData& k, float* px, size_t coun
 
 void GuardedMatrix(const Matrix3f& m, float* px, size_t count, size_t stride) noexcept
 {
-    size_t done = 0;
-    HWY_DYNAMIC_DISPATCH(GuardedMatrixSimd)(m.m, px, count, stride, &done);
-    // The tail (and strides the SIMD form does not take): the same maths.
-    GuardedMatrixReference(m, px + done * stride, count - done, stride);
+    ClampMatrix(GuardedMatrixKernel(m), px, count, stride);
 }
 
 void RootPolyPixels(const RootPolyKernelData& k, float* px, size_t count, size_t stride) noexcept

@@ -22,9 +22,27 @@ struct Matrix3f
     float m[9];
 };
 
-/// Every pixel guarded (each channel clamped to ±PIXEL_GUARD, NaN to
-/// −PIXEL_GUARD) and multiplied by `m`, in place: `count` pixels of
-/// `stride` floats (at least 3).
+/// A clamp and an affine 3×3, as OpenColorIO's RangeTransform (clamp) and
+/// MatrixTransform (with offset) compute them.
+struct ClampMatrixKernel
+{
+    bool clamp = true;  ///< clamp each channel to [lo, hi] first, NaN to lo
+    float lo = 0.0f;
+    float hi = 0.0f;
+    Matrix3f m{};
+    bool hasOffset = false;
+    float offset[3] = {};
+};
+
+/// Every pixel clamped (when k.clamp) and through the affine 3×3, in place:
+/// `count` pixels of `stride` floats (at least 3).
+void ClampMatrix(const ClampMatrixKernel& k, float* pixels, size_t count, size_t stride) noexcept;
+void ClampMatrixReference(const ClampMatrixKernel& k, float* pixels, size_t count,
+                          size_t stride) noexcept;
+
+/// The guarded 3×3 of every linear method: ClampMatrix with the pixel guard
+/// (each channel clamped to ±PIXEL_GUARD, NaN to −PIXEL_GUARD) and no offset.
+ClampMatrixKernel GuardedMatrixKernel(const Matrix3f& m) noexcept;
 void GuardedMatrix(const Matrix3f& m, float* pixels, size_t count, size_t stride) noexcept;
 void GuardedMatrixReference(const Matrix3f& m, float* pixels, size_t count,
                             size_t stride) noexcept;
