@@ -47,8 +47,14 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
     }
     else
     {
+        // ExtendConfig checks the base's references itself (once: each check
+        // looks up every colour space by name, which OCIO 2.1 does in linear time).
         const OCIO_NAMESPACE::ConstConfigRcPtr base =
-            r.baseConfig ? r.baseConfig : ReadConfigFile(r.base);
+            r.baseConfig ? r.baseConfig : ReadConfigFile(r.base, false);
+        if (!r.baseConfig)
+        {
+            options.baseName = r.base;
+        }
         result.package =
             ExtendConfig(base, options, r.workingSpace.empty(), &result.identified);
     }

@@ -133,13 +133,16 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile, Re
     return RemittancesFromFile(nameOrFile, reporter);
 }
 
-OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file)
+OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file, bool checkReferences)
 {
     try
     {
         OCIO_NAMESPACE::ConstConfigRcPtr config =
             OCIO_NAMESPACE::Config::CreateFromFile(file.c_str());
-        CheckConfigReferences(config, file);
+        if (checkReferences)
+        {
+            CheckConfigReferences(config, file);
+        }
         return config;
     }
     catch (const OCIO_NAMESPACE::Exception& e)

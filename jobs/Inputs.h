@@ -51,10 +51,11 @@ std::vector<NamedSpectrum> RemittancesFromFile(const std::string& path,
 void CheckRemittance(const NamedSpectrum& s, const std::string& source,
                      Reporter& reporter = SilentReporter());
 
-/// Reads an OCIO config file and checks that every file it references can
-/// be found. OpenColorIO's errors become one line "FILE:LINE: cannot read
-/// the config: ..." (LINE when OCIO names one).
-OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file);
+/// Reads an OCIO config file and (with `checkReferences`) checks that every
+/// file it references can be found. OpenColorIO's errors become one line
+/// "FILE:LINE: cannot read the config: ..." (LINE when OCIO names one).
+OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file,
+                                                bool checkReferences = true);
 
 /// A config given as its folder (holding config.ocio) or its .ocio file.
 OCIO_NAMESPACE::ConstConfigRcPtr LoadConfig(const std::string& folderOrFile);

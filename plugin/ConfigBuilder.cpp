@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -476,17 +477,33 @@ BaseTransforms(const OCIO::ConstConfigRcPtr& base)
                           std::function<OCIO::ConstProcessorRcPtr(const OCIO::ConstConfigRcPtr&)>>>
         out;
     const char* sl = OCIO::ROLE_SCENE_LINEAR;
-    for (int i = 0;
-         i < base->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i)
+    // Each colour space's own transforms, to and from its reference, each
+    // distinct transform once: a colour space to scene_linear is its
+    // transform to the reference then scene_linear's from it, so checking
+    // every piece checks every pair, in time linear in the config (asking
+    // OCIO 2.1 for a processor by name scans every colour space).
+    std::set<std::string> seen;
+    for (const OCIO::ConstColorSpaceRcPtr& cs : AllColorSpaces(base))
     {
-        const std::string cs = base->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
-                                                              OCIO::COLORSPACE_ALL, i);
-        out.push_back({"colour space '" + cs + "' to scene_linear",
-                       [cs, sl](const OCIO::ConstConfigRcPtr& c)
-                       { return c->getProcessor(cs.c_str(), sl); }});
-        out.push_back({"scene_linear to colour space '" + cs + "'",
-                       [cs, sl](const OCIO::ConstConfigRcPtr& c)
-                       { return c->getProcessor(sl, cs.c_str()); }});
+        const std::string name = cs->getName();
+        for (const auto dir : {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
+        {
+            const OCIO::ConstTransformRcPtr t = cs->getTransform(dir);
+            if (!t)
+            {
+                continue;
+            }
+            std::ostringstream key;
+            key << int(dir) << " " << *t;
+            if (!seen.insert(key.str()).second)
+            {
+                continue;  // the same transform as a colour space checked already
+            }
+            const bool toRef = dir == OCIO::COLORSPACE_DIR_TO_REFERENCE;
+            out.push_back({"colour space '" + name + "' " +
+                               (toRef ? "to its reference" : "from its reference"),
+                           [t](const OCIO::ConstConfigRcPtr& c) { return c->getProcessor(t); }});
+        }
     }
     for (int d = 0; d < base->getNumDisplaysAll(); ++d)
     {
@@ -633,7 +650,7 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
                            std::string* identifiedSpace)
 {
     RequireLights(o);
-    CheckConfigReferences(base, "the base config");
+    CheckConfigReferences(base, o.baseName);
     OCIO::ConstColorSpaceRcPtr sceneLinear = base->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
     if (!sceneLinear)
     {
@@ -698,7 +715,8 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
     // (serialisation may lose what the in-memory copy still has); base
     // transforms never touch bandlight's LUT files, so it can run before
     // they are written.
-    std::istringstream text(SerializeConfig(config));
+    package.text = SerializeConfig(config);
+    std::istringstream text(package.text);
     OCIO::ConfigRcPtr reread = EditableCopy(OCIO::Config::CreateFromStream(text));
     reread->setWorkingDir(config->getWorkingDir());
     VerifyBaseUnchanged(base, reread);
@@ -758,7 +776,9 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, Ou
         set.write(dir + "/" + lut.first, [&](std::ostream& os)
                   { transform->write(raw, "Academy/ASC Common LUT Format", os); });
     }
-    const std::string text = SerializeConfig(package.config);
+    // OCIO 2.1 serialises in time quadratic in the colour spaces: the text
+    // ExtendConfig checked is the one written.
+    const std::string text = package.text.empty() ? SerializeConfig(package.config) : package.text;
     set.write(dir + "/config.ocio", [&](std::ostream& os) { os << text; });
     own.commit();
 }

@@ -30,6 +30,8 @@ struct ConfigOptions
     /// Where the config will be written (ExtendConfig: the base's relative
     /// search paths are rewritten to reach the base's folder from here).
     std::string outputDir;
+    /// ExtendConfig: how messages name the base (its file, when read from one).
+    std::string baseName = "the base config";
     /// ExtendConfig: rewrite the base's relative search paths as absolute
     /// paths instead of paths relative to outputDir.
     bool absoluteBasePaths = false;
@@ -55,6 +57,10 @@ struct ConfigPackage
     std::vector<std::pair<std::string, OCIO::GroupTransformRcPtr>> lutFiles;
     std::string evidence;  ///< ExtendConfig: what identified scene_linear's primaries
     bool v1 = false;       ///< ExtendConfig: the base (and so the result) is an OCIO v1 config
+    /// ExtendConfig: the config's serialisation as checked (read back and
+    /// compared with the base), which WriteConfigPackage writes; empty: it
+    /// serialises the config itself. Clear it when changing the config.
+    std::string text;
 };
 
 /// The lecture's five illuminants: A, C, D65, F2, F11.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "plugin/ConfigReferences.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
@@ -185,16 +186,8 @@ private:
     void build()
     {
         const OCIO::ConstConfigRcPtr& c = m_config;
-        for (int i = 0;
-             i < c->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i)
+        for (const OCIO::ConstColorSpaceRcPtr& cs : AllColorSpaces(c))
         {
-            const char* name = c->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
-                                                           OCIO::COLORSPACE_ALL, i);
-            OCIO::ConstColorSpaceRcPtr cs = c->getColorSpace(name);
-            if (!cs)
-            {
-                continue;
-            }
             const Node n{Node::COLOR_SPACE, cs->getName()};
             m_edges[n];
             addTransform(n, cs->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE));
@@ -295,6 +288,24 @@ void CheckConfigReferences(const OCIO::ConstConfigRcPtr& config, const std::stri
     }
     throw Exception(file +
                     ": the config refers to itself, which OpenColorIO cannot resolve: " + chain);
+}
+
+std::vector<OCIO::ConstColorSpaceRcPtr> AllColorSpaces(const OCIO::ConstConfigRcPtr& config)
+{
+    // One lookup by name per colour space: Config::getColorSpaces() makes
+    // two (its set checks each insertion for a duplicate by name).
+    std::vector<OCIO::ConstColorSpaceRcPtr> out;
+    const int n = config->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL);
+    out.reserve(size_t(std::max(n, 0)));
+    for (int i = 0; i < n; ++i)
+    {
+        if (OCIO::ConstColorSpaceRcPtr cs = config->getColorSpace(config->getColorSpaceNameByIndex(
+                OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i)))
+        {
+            out.push_back(cs);
+        }
+    }
+    return out;
 }
 
 }  // namespace bandlight

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <OpenColorIO/OpenColorIO.h>
 
@@ -19,5 +20,10 @@ namespace OCIO = OCIO_NAMESPACE;
 /// colour space 'b' -> colour space 'a'" (names as the config spells them;
 /// `file` names the config in the message).
 void CheckConfigReferences(const OCIO::ConstConfigRcPtr& config, const std::string& file);
+
+/// Every colour space of a config, active and inactive, in the config's
+/// order, in time linear in their number (OpenColorIO 2.1's lookup by name
+/// scans every colour space, so looking each up by name is quadratic).
+std::vector<OCIO::ConstColorSpaceRcPtr> AllColorSpaces(const OCIO::ConstConfigRcPtr& config);
 
 }  // namespace bandlight

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "plugin/SceneLinearEvidence.h"
 
+#include "plugin/ConfigReferences.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -226,13 +228,9 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
             candidates.push_back({cs, role});
         }
     }
-    for (int i = 0;
-         i < config->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i)
+    for (const OCIO::ConstColorSpaceRcPtr& cs : AllColorSpaces(config))
     {
-        const char* name = config->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
-                                                            OCIO::COLORSPACE_ALL, i);
-        OCIO::ConstColorSpaceRcPtr cs = config->getColorSpace(name);
-        if (cs && cs->getName() != slName && !cs->isData())
+        if (cs->getName() != slName && !cs->isData())
         {
             candidates.push_back({cs, ""});
         }
