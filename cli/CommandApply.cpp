@@ -6,6 +6,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
+#include "cli/Diagnostics.h"
 #include "jobs/ApplyJob.h"
 #include "spectral/Parallel.h"
 
@@ -21,17 +22,45 @@ struct ApplyOptions
     RelightOptions relight;
 };
 
+/// Notes as every command prints them; a line per frame on a terminal only
+/// (a farm's log gets the summary).
+class FrameReporter : public CommandReporter
+{
+public:
+    void progress(const std::string& line, double fraction) override
+    {
+        if (fraction < 0.0 || StderrIsTerminal())
+        {
+            CommandReporter::progress(line, fraction);
+        }
+    }
+};
+
 void RunApply(ApplyOptions& o)
 {
-    CommandReporter reporter;
+    FrameReporter reporter;
     if (o.request.look.empty() && o.relight.given())
     {
         o.request.relight = o.relight.relight(reporter);
     }
-    const jobs::ApplyResult result = jobs::ApplyImages(o.request, reporter);
-    if (result.sequence)
+    const jobs::ApplyResult r = jobs::ApplyImages(o.request, reporter);
+    if (!r.sequence)
     {
-        std::cout << "Applied " << result.applied << " to " << result.frames << " frames\n";
+        return;
+    }
+    std::cout << "Applied " << r.applied << " to " << r.frames << " frames";
+    if (o.request.skipExisting || o.request.keepGoing)
+    {
+        std::cout << " (" << r.skipped << " skipped, " << r.failed.size() << " failed)";
+    }
+    std::cout << " in " << Fixed(r.seconds, 2) << " s\n";
+    if (!r.failed.empty())
+    {
+        // Exit code 2, and one line: how many, and the first of them.
+        throw Exception(std::to_string(r.failed.size()) + " of " +
+                        std::to_string(r.frames + r.skipped + r.failed.size()) +
+                        " frames failed; the first, frame " + std::to_string(r.failed[0].frame) +
+                        ": " + r.failed[0].error);
     }
 }
 
@@ -51,7 +80,13 @@ void AddApplyCommand(CLI::App& app)
     cmd->add_option("--colorspace", r.colorspace,
                     "Colour space of the image in the config (default: its scene_linear role)");
     AddRelightOptions(*cmd, o->relight, false);
-    cmd->add_option("--frames", r.frames, "Frame range for patterns, e.g. 1001-1100");
+    cmd->add_option("--frames", r.frames,
+                    "Frames for patterns, as farms hand them out: 1001-1100, 1001-1100x2, "
+                    "1001-1010,1020");
+    cmd->add_flag("--skip-existing", r.skipExisting,
+                  "Skip frames whose output exists (outputs are written whole or not at all)");
+    cmd->add_flag("--keep-going", r.keepGoing,
+                  "Go on after a frame fails; at the end name the failed frames and exit 2");
     cmd->add_option("--threads", r.threads, "Threads (0: all cores; at most 256)")
         ->check(CLI::Range(0, kMaxThreads))
         ->capture_default_str();

@@ -97,6 +97,12 @@ void Progress(const std::string& line)
     std::cerr << OneLine(line) << "\n";
 }
 
+bool StderrIsTerminal()
+{
+    const int real = g_realStderr.load();
+    return ::isatty(real >= 0 ? real : 2) != 0;
+}
+
 void Note(const std::string& line)
 {
     std::cerr << "note: " << OneLine(line) << "\n";

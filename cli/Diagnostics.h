@@ -34,6 +34,9 @@ private:
 /// collected with the other notes (and shown only when the run succeeds).
 void Progress(const std::string& line);
 
+/// True when the run's real stderr is a terminal.
+bool StderrIsTerminal();
+
 /// A note on stderr ("note: ..."), shown when the run succeeds.
 void Note(const std::string& line);
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/ApplyJob.h"
 
+#include <chrono>
+#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -120,11 +122,41 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             "{frames} needs frame patterns such as plate.####.exr for IN and OUT");
     }
     const std::vector<int> frames = ParseFrameRange(r.frames);
-    for (const int f : frames)
+    const auto t0 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < frames.size(); ++i)
     {
-        applyOne(ExpandFramePattern(r.input, f), ExpandFramePattern(r.output, f));
+        const int f = frames[i];
+        const std::string out = ExpandFramePattern(r.output, f);
+        std::string state = "done";
+        if (r.skipExisting && std::filesystem::exists(out))
+        {
+            ++result.skipped;
+            state = "skipped (exists)";
+        }
+        else
+        {
+            try
+            {
+                applyOne(ExpandFramePattern(r.input, f), out);
+                ++result.frames;
+            }
+            catch (const std::exception& e)
+            {
+                if (!r.keepGoing)
+                {
+                    throw;
+                }
+                result.failed.push_back({f, e.what()});
+                state = "failed";
+            }
+        }
+        reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
+                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) +
+                              ")",
+                          double(i + 1) / double(frames.size()));
     }
-    result.frames = frames.size();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.sequence = true;
     return result;
 }

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "jobs/Inputs.h"
 
@@ -25,12 +26,28 @@ struct ApplyRequest
     /// the other methods through their OCIO transform).
     std::optional<RelightRequest> relight;
     int threads = 0;  ///< 0: all cores
+    /// Frames whose output exists are skipped (outputs are written
+    /// atomically, so an existing file is a complete one): a re-queued
+    /// chunk redoes only what is missing.
+    bool skipExisting = false;
+    /// A frame that fails does not stop the others; the result lists it.
+    bool keepGoing = false;
+};
+
+/// A frame that could not be done, and why.
+struct FrameFailure
+{
+    int frame = 0;
+    std::string error;
 };
 
 struct ApplyResult
 {
     std::string applied;  ///< what was applied: "look band3_A_to_D65", a look name
     size_t frames = 0;    ///< frames written (1 for a single image)
+    size_t skipped = 0;   ///< frames whose output existed (skipExisting)
+    std::vector<FrameFailure> failed;  ///< keepGoing: the frames that failed, in order
+    double seconds = 0.0;              ///< wall time of the frames
     /// Applied by bandlight's own kernel (a clamp-and-matrix processor,
     /// rootpoly) rather than by OpenColorIO's CPU processor.
     bool native = false;
@@ -39,6 +56,8 @@ struct ApplyResult
 
 /// Applies `request`: every output is complete or absent (written to a
 /// temporary file, then renamed); alpha and other channels pass through.
+/// Progress is reported per frame. Without keepGoing the first failing
+/// frame throws (the frames before it are written).
 ApplyResult ApplyImages(const ApplyRequest& request, Reporter& reporter = SilentReporter());
 
 }  // namespace bandlight::jobs

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <unordered_set>
 
 #include "spectral/Exception.h"
 
@@ -119,43 +120,91 @@ std::string ExpandFramePattern(const std::string& pattern, int frame)
 std::vector<int> ParseFrameRange(const std::string& text)
 {
     const std::string shown = OneLine(text, 80);
+    const auto fail = [&]
+    {
+        return Exception("frame range '" + shown +
+                         "': expected FIRST-LAST, FIRST-LASTxSTEP or FRAME, separated by commas, "
+                         "e.g. 1001-1100, 1001-1100x2 or 1001-1010,1020 (frame numbers of at "
+                         "most 9 digits)");
+    };
+    const auto skipSpaces = [&](size_t& i)
+    {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+        {
+            ++i;
+        }
+    };
+    struct Item
+    {
+        long first, last, step;
+    };
+    std::vector<Item> items;
+    long total = 0;
     size_t i = 0;
-    long first = 0, last = 0;
-    bool ok = ParseFrameNumber(text, i, first);
-    last = first;
-    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
+    for (;;)
     {
+        long first = 0, last = 0, step = 1;
+        if (!ParseFrameNumber(text, i, first))
+        {
+            throw fail();
+        }
+        last = first;
+        skipSpaces(i);
+        if (i < text.size() && text[i] == '-')
+        {
+            ++i;
+            if (!ParseFrameNumber(text, i, last))
+            {
+                throw fail();
+            }
+            skipSpaces(i);
+            if (i < text.size() && (text[i] == 'x' || text[i] == 'X'))
+            {
+                ++i;
+                if (!ParseFrameNumber(text, i, step) || step < 1)
+                {
+                    throw Exception("frame range '" + shown +
+                                    "': the step after x is a whole number of at least 1");
+                }
+                skipSpaces(i);
+            }
+        }
+        if (last < first)
+        {
+            throw Exception("frame range '" + shown + "': the last frame comes before the first");
+        }
+        total += (last - first) / step + 1;
+        if (total > kMaxFramesPerCall)
+        {
+            throw Exception("frame range '" + shown + "': " +
+                            std::to_string(total) +
+                            " frames; at most " + std::to_string(kMaxFramesPerCall) +
+                            " per call (split the range)");
+        }
+        items.push_back({first, last, step});
+        if (i == text.size())
+        {
+            break;
+        }
+        if (text[i] != ',')
+        {
+            throw fail();
+        }
         ++i;
     }
-    if (ok && i < text.size() && text[i] == '-')
-    {
-        ++i;
-        ok = ParseFrameNumber(text, i, last);
-    }
-    while (ok && i < text.size() && std::isspace(static_cast<unsigned char>(text[i])))
-    {
-        ++i;
-    }
-    if (!ok || i != text.size())
-    {
-        throw Exception("frame range '" + shown +
-                        "': expected FIRST-LAST, e.g. 1001-1100 (frame numbers of at most 9 "
-                        "digits)");
-    }
-    if (last < first)
-    {
-        throw Exception("frame range '" + shown + "': the last frame comes before the first");
-    }
-    if (last - first + 1 > kMaxFramesPerCall)
-    {
-        throw Exception("frame range '" + shown + "': " + std::to_string(last - first + 1) +
-                        " frames; at most " + std::to_string(kMaxFramesPerCall) +
-                        " per call (split the range)");
-    }
+    // In the order given, each frame once.
     std::vector<int> frames;
-    for (long f = first; f <= last; ++f)
+    frames.reserve(size_t(total));
+    std::unordered_set<long> seen;
+    for (const Item& item : items)
     {
-        frames.push_back(int(f));
+        for (long f = item.first; f <= item.last; f += item.step)
+        {
+            if (seen.insert(f).second)
+            {
+                frames.push_back(int(f));
+            }
+        }
     }
     return frames;
 }

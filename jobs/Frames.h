@@ -20,8 +20,11 @@ constexpr int kMaxFrameWidth = 9;
 /// At most this many frames in one call: a farm splits longer ranges.
 constexpr long kMaxFramesPerCall = 1000000;
 
-/// Parses "1001-1100" or "1001" into the frames it names (at most
-/// kMaxFramesPerCall, numbers of at most 9 digits); throws Exception.
+/// Parses a frame set as render farms hand them out: ranges "1001-1100",
+/// ranges with a step "1001-1100x2", single frames, and lists of them
+/// "1001-1010,1020" (OpenCue's and Deadline's syntax), into the frames it
+/// names, in the order given, each once; at most kMaxFramesPerCall, numbers
+/// of at most 9 digits. Throws Exception with one line naming the text.
 std::vector<int> ParseFrameRange(const std::string& text);
 
 }  // namespace bandlight::jobs

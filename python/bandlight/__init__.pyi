@@ -269,6 +269,9 @@ class AccuracyDocument(TypedDict):
 class ApplyResult(TypedDict):
     applied: str
     frames: int
+    skipped: int
+    failed: List[Tuple[int, str]]
+    seconds: float
 
 def config(out: Optional[StrPath] = None, *, working_space: Optional[str] = None,
            illuminants: Union[str, Sequence[LightLike]] = ("A", "C", "D65", "F2", "F11"),
@@ -304,7 +307,8 @@ def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           training: Optional[RemittancesLike] = None,
           plates: str = "balanced", adaptation: str = "cat02",
           camera: Optional[StrPath] = None, camera_idt: str = "D55",
-          threads: int = 0) -> ApplyResult: ...
+          threads: int = 0, skip_existing: bool = False,
+          keep_going: bool = False) -> ApplyResult: ...
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
            mode: Optional[str] = None, threads: int = 0, unplanned: bool = False) -> Float32Array: ...
 def explain_scene(scene: Optional[StrPath] = None, *, text: Optional[str] = None,

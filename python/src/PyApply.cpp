@@ -25,7 +25,7 @@ py::dict Apply(const py::object& input, const py::object& output,
                const py::object& src, const py::object& dst, const std::string& method,
                const std::string& working, const py::object& observer, const py::object& training,
                const std::string& plates, const std::string& adaptation, const py::object& camera,
-               const std::string& cameraIdt, int threads)
+               const std::string& cameraIdt, int threads, bool skipExisting, bool keepGoing)
 {
     jobs::ApplyRequest r;
     r.input = PathText(input, "input");
@@ -35,6 +35,8 @@ py::dict Apply(const py::object& input, const py::object& output,
     r.config = config.is_none() ? "" : PathText(config, "config");
     r.colorspace = colorspace.value_or("");
     r.threads = ToThreads(threads);
+    r.skipExisting = skipExisting;
+    r.keepGoing = keepGoing;
     if (src.is_none() != dst.is_none())
     {
         throw ParameterError("give both {src} and {dst}, or a {look}");
@@ -68,6 +70,14 @@ py::dict Apply(const py::object& input, const py::object& output,
     py::dict d;
     d["applied"] = result.applied;
     d["frames"] = result.frames;
+    d["skipped"] = result.skipped;
+    py::list failed;
+    for (const jobs::FrameFailure& f : result.failed)
+    {
+        failed.append(py::make_tuple(f.frame, f.error));
+    }
+    d["failed"] = failed;
+    d["seconds"] = result.seconds;
     return d;
 }
 }  // namespace
@@ -82,11 +92,13 @@ void AddApply(py::module_& m)
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
           py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
-          py::arg("threads") = 0,
+          py::arg("threads") = 0, py::arg("skip_existing") = false,
+          py::arg("keep_going") = false,
           (std::string(R"doc(
 Applies a look, or an illuminant change, to an image file or a frame
 sequence through OpenImageIO: the job of ``bandlight apply``. Returns
-{"applied": what was applied, "frames": the frames written}.
+{"applied": what was applied, "frames": the frames written, "skipped": the
+frames skipped, "failed": [(frame, error)], "seconds": wall time}.
 
 input, output: image files (any format OpenImageIO reads), or frame patterns
 such as "plate.####.exr" with frames="1001-1100". Each output keeps its
@@ -96,7 +108,11 @@ applied in colorspace (default: the config's scene_linear role). Otherwise
 src, dst (names, files or Spectrum) and method: the illuminant change in
 working_space (rootpoly natively, the other methods through OCIO).
 training: fit3x3's / rootpoly's remittances. Runs with the GIL released on
-threads threads (0: all cores).
+threads threads (0: all cores). frames: a frame set as farms hand them out
+("1001-1100", "1001-1100x2", "1001-1010,1020"). skip_existing: frames whose
+output exists are skipped (outputs are written whole or not at all).
+keep_going: a frame that fails does not stop the others; it is listed in
+"failed" (without it, the first failure raises).
 )doc") + kPlatesDoc)
               .c_str());
 }

@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include "cli/RunCommand.h"
 
 using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
 
 namespace
 {
@@ -291,6 +294,78 @@ TEST_CASE("apply runs over a frame range for farm splits", "[cli][oiio]")
                   "' --from A --to D65 --frames 1003-1004");
     CHECK(missing.code == 2);
     CHECK_THAT(missing.err, Contains("seq.1004.exr: cannot read image"));
+}
+
+TEST_CASE("apply takes farm frame sets, resumes with --skip-existing, and --keep-going names "
+          "the bad frame",
+          "[cli][oiio][farm]")
+{
+    for (int f = 1001; f <= 1006; ++f)
+    {
+        WriteTestImage(Temp("farm." + std::to_string(f) + ".exr"), 16, 8, unsigned(f));
+    }
+    const std::string in = "'" + Temp("farm.####.exr") + "'";
+    const std::string out = "'" + Temp("farmout.####.exr") + "'";
+    for (int f = 1001; f <= 1006; ++f)
+    {
+        std::remove(Temp("farmout." + std::to_string(f) + ".exr").c_str());
+    }
+    // A step and a list: 1001, 1003, 1005 and 1006.
+    Result r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1005x2,1006");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.out, Contains("to 4 frames in "));
+    for (int f = 1001; f <= 1006; ++f)
+    {
+        CHECK(Exists(Temp("farmout." + std::to_string(f) + ".exr")) == (f != 1002 && f != 1004));
+    }
+    // A re-queued chunk after one output was lost rewrites that frame alone.
+    const std::string kept = Temp("farmout.1003.exr");
+    std::remove(Temp("farmout.1005.exr").c_str());
+    struct stat before
+    {
+    };
+    REQUIRE(::stat(kept.c_str(), &before) == 0);
+    r = Bandlight("apply " + in + " " + out +
+                  " --from A --to D65 --frames 1001-1005x2,1006 --skip-existing");
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.out, Contains("to 1 frames (3 skipped, 0 failed)"));
+    CHECK(Exists(Temp("farmout.1005.exr")));
+    struct stat after
+    {
+    };
+    REQUIRE(::stat(kept.c_str(), &after) == 0);
+    CHECK(after.st_ino == before.st_ino);  // not rewritten
+    // A corrupt frame in the middle: every other frame is written, exit 2,
+    // one line naming the bad frame.
+    {
+        std::ofstream bad(Temp("farm.1003.exr"), std::ios::binary | std::ios::trunc);
+        bad << "not an image";
+    }
+    for (int f = 1001; f <= 1006; ++f)
+    {
+        std::remove(Temp("farmout." + std::to_string(f) + ".exr").c_str());
+    }
+    r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1006 --keep-going");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.out, Contains("to 5 frames (0 skipped, 1 failed)"));
+    CHECK_THAT(r.err, StartsWith("bandlight: 1 of 6 frames failed; the first, frame 1003: "));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    for (int f = 1001; f <= 1006; ++f)
+    {
+        CHECK(Exists(Temp("farmout." + std::to_string(f) + ".exr")) == (f != 1003));
+    }
+    // Without --keep-going the chunk stops at the bad frame.
+    r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1006");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("farm.1003.exr"));
+    // Frame sets are validated: one line each.
+    for (const char* bad : {"1-10x0", "10-1", "1-5,,7", "1-3y2", "x"})
+    {
+        r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames '" + bad + "'");
+        CHECK(r.code == 2);
+        CHECK_THAT(r.err, StartsWith("bandlight: frame range '"));
+    }
 }
 
 TEST_CASE("lut writes files OCIO reads back", "[cli][ocio]")
