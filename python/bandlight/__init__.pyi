@@ -299,7 +299,10 @@ def accuracy(illuminants: Union[str, Sequence[LightLike], None] = None,
              camera: Optional[StrPath] = None, camera_idt: str = "D55",
              json: Optional[StrPath] = None,
              plot: Optional[StrPath] = None) -> AccuracyDocument: ...
-def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
+def frame_set(text: str) -> List[int]: ...
+def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None, client: Any = None,
+          **options: Any) -> ApplyResult: ...
+def _apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           look: Optional[str] = None, config: Optional[StrPath] = None,
           colorspace: Optional[str] = None, src: Optional[LightLike] = None,
           dst: Optional[LightLike] = None, method: str = "bradford",

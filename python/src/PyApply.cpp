@@ -3,6 +3,7 @@
 // as `bandlight apply` applies them (jobs/ApplyJob).
 #include "PyBandlight.h"
 #include "jobs/ApplyJob.h"
+#include "jobs/Frames.h"
 
 namespace bandlight::python
 {
@@ -84,7 +85,13 @@ py::dict Apply(const py::object& input, const py::object& output,
 
 void AddApply(py::module_& m)
 {
-    m.def("apply", &Apply, py::arg("input"), py::arg("output"), py::kw_only(),
+    m.def(
+        "frame_set", [](const std::string& text) { return jobs::ParseFrameRange(text); },
+        py::arg("text"), R"doc(
+The frames a frame set names, as ``--frames`` reads it: "1001-1100",
+"1001-1100x2", "1001-1010,1020"; in the order given, each once.
+)doc");
+    m.def("_apply", &Apply, py::arg("input"), py::arg("output"), py::kw_only(),
           py::arg("frames") = py::none(), py::arg("look") = py::none(),
           py::arg("config") = py::none(), py::arg("colorspace") = py::none(),
           py::arg("src") = py::none(), py::arg("dst") = py::none(),

@@ -27,6 +27,10 @@ struct PyRelighter
     std::string method;
     std::string workingSpace;
     std::unique_ptr<Relighter> relighter;
+    /// What it was made from, resolved (the lights and training as
+    /// Spectrum, the camera file's path): its pickled state, so that a
+    /// worker process (a Dask cluster's) makes the same relighter.
+    py::tuple spec;
 };
 
 PyRelighter MakeRelighter(const py::object& src, const py::object& dst, const std::string& method,
@@ -38,8 +42,33 @@ PyRelighter MakeRelighter(const py::object& src, const py::object& dst, const st
     const MethodSpec spec = ToMethod(method, training, plates);
     const RgbSpace& space = FindRgbSpace(working);
     const Observer o = ToObserver(observer);
+    py::list trainingState;
+    for (const NamedSpectrum& t : spec.training)
+    {
+        trainingState.append(py::cast(t));
+    }
+    const py::tuple state = py::make_tuple(
+        py::cast(NamedSpectrum{from.name, from.spectrum}),
+        py::cast(NamedSpectrum{to.name, to.spectrum}), method, working,
+        py::str(observer), spec.training.empty() ? py::object(py::none()) : py::object(trainingState),
+        plates.plates, plates.adaptation,
+        plates.camera.is_none() ? py::object(py::none())
+                                : py::object(py::module_::import("os").attr("fspath")(plates.camera)),
+        plates.cameraIdt);
     return {from.name, to.name, spec.name, space.name,
-            std::make_unique<Relighter>(from, to, spec, space, o)};
+            std::make_unique<Relighter>(from, to, spec, space, o), state};
+}
+
+PyRelighter RelighterFromState(const py::tuple& t)
+{
+    if (t.size() != 10)
+    {
+        throw Exception("Relighter: invalid pickled state");
+    }
+    return MakeRelighter(t[0], t[1], t[2].cast<std::string>(), t[3].cast<std::string>(), t[4], t[5],
+                         PlatesArgs{t[6].cast<std::string>(), t[7].cast<std::string>(),
+                                    py::reinterpret_borrow<py::object>(t[8]),
+                                    t[9].cast<std::string>()});
 }
 
 std::string ShapeOf(const py::array& a)
@@ -306,6 +335,10 @@ white-balanced plates, CAT02).
              py::arg("camera_idt") = "D55",
              "src, dst: a name or file (str), a file (os.PathLike) or a Spectrum; method: any\n"
              "image method (not \"spectral\").")
+        .def(py::pickle([](const PyRelighter& r) { return r.spec; }, &RelighterFromState),
+             "Pickles by its specification (lights and training as spectra, the camera\n"
+             "file by path), so dask.array.map_blocks(relighter.apply) runs on a cluster of\n"
+             "processes: each worker makes the same relighter.")
         .def("apply", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = 0,
              py::arg("out") = py::none(), kApplyDoc)
         .def("__call__", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = 0,

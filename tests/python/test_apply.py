@@ -88,3 +88,21 @@ def test_apply_skips_existing_frames_and_keeps_going(tmp_path):
     with pytest.raises(ValueError, match="p.0003.exr"):
         bandlight.apply(tmp_path / "p.####.exr", tmp_path / "x.####.exr", frames="1-4",
                         src="A", dst="D65")
+
+
+def test_relighter_pickles_by_its_specification(tmp_path):
+    import pickle
+    training = bandlight.reflectances("TCS")
+    for r in (bandlight.Relighter("A", "D65", "bradford"),
+              bandlight.Relighter("F11", "D65", "rootpoly", plates="lit"),
+              bandlight.Relighter(bandlight.illuminant("3200K"), "D65", "fit3x3",
+                                  training=training)):
+        again = pickle.loads(pickle.dumps(r))
+        px = np.random.default_rng(2).uniform(0, 4, (64, 3)).astype(np.float32)
+        np.testing.assert_array_equal(again.apply(px), r.apply(px))
+
+
+def test_frame_sets_are_the_commands():
+    assert bandlight.frame_set("1001-1005x2,1010") == [1001, 1003, 1005, 1010]
+    with pytest.raises(ValueError, match="frame range"):
+        bandlight.frame_set("5-1")

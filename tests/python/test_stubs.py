@@ -3,6 +3,7 @@
 everything public has a docstring."""
 
 import ast
+import inspect
 import pathlib
 import re
 
@@ -118,6 +119,14 @@ def test_signatures_match(name):
             if callable(attr) and getattr(attr, "__doc__", None) and \
                     type(attr).__name__ in ("builtin_function_or_method", "instancemethod"):
                 check_callable(attr, members[m], f"{name}.{m}")
+    elif inspect.isfunction(obj):
+        # Written in Python (bandlight/__init__.py): its own signature.
+        sig = inspect.signature(obj)
+        names = [p.name for p in sig.parameters.values()
+                 if p.kind not in (p.VAR_KEYWORD, p.VAR_POSITIONAL)]
+        kwonly = {p.name for p in sig.parameters.values() if p.kind == p.KEYWORD_ONLY}
+        stubs = [stub_signature(f) for f in defs if isinstance(f, ast.FunctionDef)]
+        assert (names, kwonly) in stubs, f"{name}: {names} is not in the stubs: {stubs}"
     elif callable(obj) and not isinstance(obj, type):
         check_callable(obj, defs, name)
 
