@@ -147,8 +147,7 @@ static void CopyUhd(benchmark::State& state, size_t channels)
         const size_t chunk = src.size() / threads;
         for (size_t t = 0; t < threads; ++t)
         {
-            pool.emplace_back([&, t]
-                              { std::memcpy(&dst[chunk * t], &src[chunk * t], chunk * 4); });
+            pool.emplace_back([&, t] { std::memcpy(&dst[chunk * t], &src[chunk * t], chunk * 4); });
         }
         for (auto& th : pool)
         {

@@ -72,8 +72,7 @@ void AddApplyCommand(CLI::App& app)
     jobs::ApplyRequest& r = o->request;
     CLI::App* cmd = app.add_subcommand(
         "apply", "Re-light an image or a frame sequence through OpenImageIO and OpenColorIO");
-    cmd->add_option("IN", r.input, "Input image, or a pattern such as plate.####.exr")
-        ->required();
+    cmd->add_option("IN", r.input, "Input image, or a pattern such as plate.####.exr")->required();
     cmd->add_option("OUT", r.output, "Output image, or a pattern")->required();
     cmd->add_option("--look", r.look, "Look to apply, from --config");
     cmd->add_option("--config", r.config, "Config directory (or .ocio file) holding the look");

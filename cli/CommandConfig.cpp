@@ -35,9 +35,9 @@ void RunConfig(ConfigCommandOptions& o)
     std::cout << "Wrote " << r.out << "/config.ocio: " << package.config->getNumLooks()
               << " looks and " << package.config->getNumNamedTransforms()
               << " named transforms for " << result.identified << " ("
-              << result.options.lights.size() << " illuminants, "
-              << result.options.methods.size() << " methods) for "
-              << (result.options.plates.balanced() ? "white-balanced" : "lit") << " plates";
+              << result.options.lights.size() << " illuminants, " << result.options.methods.size()
+              << " methods) for " << (result.options.plates.balanced() ? "white-balanced" : "lit")
+              << " plates";
     if (!package.lutFiles.empty())
     {
         std::cout << ", and " << package.lutFiles.size() << " LUT files in " << r.out << "/luts";
@@ -45,8 +45,8 @@ void RunConfig(ConfigCommandOptions& o)
     std::cout << "\n";
     if (!package.evidence.empty())
     {
-        std::cout << "scene_linear identified as " << result.identified << ": "
-                  << package.evidence << "\n";
+        std::cout << "scene_linear identified as " << result.identified << ": " << package.evidence
+                  << "\n";
     }
     if (package.v1)
     {

@@ -82,8 +82,9 @@ void RunPlot(const PlotOptions& o)
     std::ostringstream data, plot;
     // Names and titles come from files and file names: quoted so gnuplot
     // shows them and never evaluates them.
-    plot << "set title " << jobs::GnuplotQuote(title) << "\nset xlabel 'wavelength (nm)'\nset ylabel "
-         << jobs::GnuplotQuote(ylabel) << "\nset grid\nset key top right\nset xrange [360:830]\n";
+    plot << "set title " << jobs::GnuplotQuote(title)
+         << "\nset xlabel 'wavelength (nm)'\nset ylabel " << jobs::GnuplotQuote(ylabel)
+         << "\nset grid\nset key top right\nset xrange [360:830]\n";
     for (const Band& b : bands)
     {
         plot << "set arrow from " << b.minNm << ", graph 0 to " << b.minNm

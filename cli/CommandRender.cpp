@@ -122,9 +122,9 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
 
 void RunRender(const RenderOptions& o)
 {
-    const Scene scene = jobs::LoadScene(
-        o.scene, std::nullopt, o.scene,
-        o.mode.empty() ? std::nullopt : std::optional<std::string>(o.mode));
+    const Scene scene =
+        jobs::LoadScene(o.scene, std::nullopt, o.scene,
+                        o.mode.empty() ? std::nullopt : std::optional<std::string>(o.mode));
     // --unplanned says what the literal path does, not what a plan would.
     const ScenePlan plan = o.unplanned ? ScenePlan{} : PlanScene(scene);
     std::cout << (o.unplanned ? ExplainUnplanned(scene) : ExplainPlan(scene, plan));

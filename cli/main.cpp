@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // bandlight: the command, one face of the jobs library (jobs/): each
-// subcommand maps its flags to a request and prints the result. Exit codes: 0 success, 2 bad input (one line on stderr), 1
-// anything unexpected.
+// subcommand maps its flags to a request and prints the result. Exit codes: 0 success, 2 bad input
+// (one line on stderr), 1 anything unexpected.
 #include <iostream>
 #include <new>
 

@@ -42,8 +42,7 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
                                     [&](const ReflectanceSet& s) { return s.name == setName; });
     for (const std::string& m : hasSet ? options.methods : std::vector<std::string>{})
     {
-        if (m == "rootpoly-camera" || m == "rootpoly3-camera" ||
-            !result.costAllThreads.count(m))
+        if (m == "rootpoly-camera" || m == "rootpoly3-camera" || !result.costAllThreads.count(m))
         {
             continue;
         }

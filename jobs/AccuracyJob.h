@@ -24,12 +24,12 @@ struct AccuracyRequest
     bool defaultSets = true;
     std::string workingSpace = defaults::WORKING_SPACE;
     std::string observer = defaults::OBSERVER;
-    std::vector<double> exposures;  ///< multiples of the white; empty: 2^-8 … 2^4
+    std::vector<double> exposures;            ///< multiples of the white; empty: 2^-8 … 2^4
     int lutSize = defaults::CONFIG_LUT_SIZE;  ///< the shipped non-linear looks' 3D LUT size
-    bool idealOnly = false;        ///< skip the shipped forms (the OCIO processors)
-    bool crossValidation = true;   ///< the fitted methods on their own training data
-    bool floor = true;             ///< the best a pixel-only method fitted on each set reaches
-    bool cost = true;              ///< time every method (a few seconds)
+    bool idealOnly = false;                   ///< skip the shipped forms (the OCIO processors)
+    bool crossValidation = true;              ///< the fitted methods on their own training data
+    bool floor = true;  ///< the best a pixel-only method fitted on each set reaches
+    bool cost = true;   ///< time every method (a few seconds)
     /// "both" (default: balanced and lit), "balanced" or "lit".
     PlatesRequest plates{"both", defaults::ADAPTATION, "", defaults::IDT_LIGHT};
     std::string json;  ///< write the JSON document to this file ("" none)

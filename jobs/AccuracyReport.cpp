@@ -164,9 +164,7 @@ std::string AccuracyReport(const AccuracyResult& result)
                     const auto at = [&](const std::string& source, bool lecture)
                     {
                         return Summarise(rows, m, set.name, {1.0, false, key, source},
-                                         lecture
-                                             ? lecturePairs
-                                             : Pairs{})
+                                         lecture ? lecturePairs : Pairs{})
                             .mean;
                     };
                     char line[240];

@@ -71,8 +71,8 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         if (method.method == ChangeMethod::ROOTPOLY ||
             method.method == ChangeMethod::ROOTPOLY_CAMERA)
         {
-            const auto relighter = std::make_shared<Relighter>(
-                relight.src, relight.dst, method, relight.working(), observer);
+            const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
+                                                               relight.working(), observer);
             native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
             result.applied =
                 LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
@@ -118,8 +118,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     }
     if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
     {
-        throw ParameterError(
-            "{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
     }
     const std::vector<int> frames = ParseFrameRange(r.frames);
     const auto t0 = std::chrono::steady_clock::now();
@@ -151,12 +150,10 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             }
         }
         reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
-                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) +
-                              ")",
+                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")",
                           double(i + 1) / double(frames.size()));
     }
-    result.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.sequence = true;
     return result;
 }

@@ -43,9 +43,9 @@ struct FrameFailure
 
 struct ApplyResult
 {
-    std::string applied;  ///< what was applied: "look band3_A_to_D65", a look name
-    size_t frames = 0;    ///< frames written (1 for a single image)
-    size_t skipped = 0;   ///< frames whose output existed (skipExisting)
+    std::string applied;               ///< what was applied: "look band3_A_to_D65", a look name
+    size_t frames = 0;                 ///< frames written (1 for a single image)
+    size_t skipped = 0;                ///< frames whose output existed (skipExisting)
     std::vector<FrameFailure> failed;  ///< keepGoing: the frames that failed, in order
     double seconds = 0.0;              ///< wall time of the frames
     /// Applied by bandlight's own kernel (a clamp-and-matrix processor,

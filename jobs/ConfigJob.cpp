@@ -55,8 +55,7 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
         {
             options.baseName = r.base;
         }
-        result.package =
-            ExtendConfig(base, options, r.workingSpace.empty(), &result.identified);
+        result.package = ExtendConfig(base, options, r.workingSpace.empty(), &result.identified);
     }
     if (!r.out.empty())
     {

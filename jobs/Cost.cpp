@@ -123,10 +123,11 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
             std::vector<float> px = source;
             const double s = BestSeconds(
                 [&] { ApplyToBuffer(cpu, px.data(), 1920, pixels / 1920, 4, rgb, threads); });
-            rows.push_back(
-                {name,
-                 method.isLinear() ? "ocio-matrix" : "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE),
-                 threads, s * 1e9 / double(pixels)});
+            rows.push_back({name,
+                            method.isLinear()
+                                ? "ocio-matrix"
+                                : "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE),
+                            threads, s * 1e9 / double(pixels)});
         }
         if (!method.isLinear())
         {

@@ -176,8 +176,7 @@ std::vector<int> ParseFrameRange(const std::string& text)
         total += (last - first) / step + 1;
         if (total > kMaxFramesPerCall)
         {
-            throw Exception("frame range '" + shown + "': " +
-                            std::to_string(total) +
+            throw Exception("frame range '" + shown + "': " + std::to_string(total) +
                             " frames; at most " + std::to_string(kMaxFramesPerCall) +
                             " per call (split the range)");
         }

@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -61,6 +61,42 @@ void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in
     }
 }
 
+namespace
+{
+/// R, G, B of each row gathered into packed triples, `rgbFunction` applied,
+/// scattered back; rows split over `threads` threads.
+void ApplyRgbRows(const std::function<void(float* rgb, size_t count)>& rgbFunction, float* pixels,
+                  long width, long height, int channels, const int* rgb, int threads)
+{
+    ParallelFor(size_t(std::max(height, 0L)), threads,
+                [&](size_t y0, size_t y1)
+                {
+                    std::vector<float> row(3 * size_t(width));
+                    for (size_t y = y0; y < y1; ++y)
+                    {
+                        float* p = pixels + y * size_t(width) * size_t(channels);
+                        for (long x = 0; x < width; ++x)
+                        {
+                            for (int c = 0; c < 3; ++c)
+                            {
+                                row[3 * size_t(x) + size_t(c)] =
+                                    p[size_t(x) * size_t(channels) + size_t(rgb[c])];
+                            }
+                        }
+                        rgbFunction(row.data(), size_t(width));
+                        for (long x = 0; x < width; ++x)
+                        {
+                            for (int c = 0; c < 3; ++c)
+                            {
+                                p[size_t(x) * size_t(channels) + size_t(rgb[c])] =
+                                    row[3 * size_t(x) + size_t(c)];
+                            }
+                        }
+                    }
+                });
+}
+}  // namespace
+
 void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
                   const std::string& in, const std::string& out, int threads,
                   const std::string& note)
@@ -68,34 +104,7 @@ void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFuncti
     const std::string error = ImageFiles().transform(
         in, out,
         [&](float* pixels, long width, long height, int channels, const int* rgb)
-        {
-            ParallelFor(size_t(std::max(height, 0L)), threads,
-                        [&](size_t y0, size_t y1)
-                        {
-                            std::vector<float> row(3 * size_t(width));
-                            for (size_t y = y0; y < y1; ++y)
-                            {
-                                float* p = pixels + y * size_t(width) * size_t(channels);
-                                for (long x = 0; x < width; ++x)
-                                {
-                                    for (int c = 0; c < 3; ++c)
-                                    {
-                                        row[3 * size_t(x) + size_t(c)] =
-                                            p[size_t(x) * size_t(channels) + size_t(rgb[c])];
-                                    }
-                                }
-                                rgbFunction(row.data(), size_t(width));
-                                for (long x = 0; x < width; ++x)
-                                {
-                                    for (int c = 0; c < 3; ++c)
-                                    {
-                                        p[size_t(x) * size_t(channels) + size_t(rgb[c])] =
-                                            row[3 * size_t(x) + size_t(c)];
-                                    }
-                                }
-                            }
-                        });
-        },
+        { ApplyRgbRows(rgbFunction, pixels, width, height, channels, rgb, threads); },
         note);
     if (!error.empty())
     {
@@ -114,40 +123,16 @@ void ApplyToImage(const ClampMatrixKernel& kernel, const std::string& in, const 
             {
                 const size_t rowFloats = size_t(width) * size_t(channels);
                 ParallelFor(size_t(std::max(height, 0L)), threads,
-                            [&](size_t y0, size_t y1)
-                            {
+                            [&](size_t y0, size_t y1) {
                                 ClampMatrix(kernel, pixels + y0 * rowFloats,
                                             (y1 - y0) * size_t(width), size_t(channels));
                             });
                 return;
             }
-            // Channels in another order: gather R, G, B per row.
-            ParallelFor(size_t(std::max(height, 0L)), threads,
-                        [&](size_t y0, size_t y1)
-                        {
-                            std::vector<float> row(3 * size_t(width));
-                            for (size_t y = y0; y < y1; ++y)
-                            {
-                                float* p = pixels + y * size_t(width) * size_t(channels);
-                                for (long x = 0; x < width; ++x)
-                                {
-                                    for (int c = 0; c < 3; ++c)
-                                    {
-                                        row[3 * size_t(x) + size_t(c)] =
-                                            p[size_t(x) * size_t(channels) + size_t(rgb[c])];
-                                    }
-                                }
-                                ClampMatrix(kernel, row.data(), size_t(width), 3);
-                                for (long x = 0; x < width; ++x)
-                                {
-                                    for (int c = 0; c < 3; ++c)
-                                    {
-                                        p[size_t(x) * size_t(channels) + size_t(rgb[c])] =
-                                            row[3 * size_t(x) + size_t(c)];
-                                    }
-                                }
-                            }
-                        });
+            // Channels in another order: gathered as RGB rows, as for any
+            // per-pixel function.
+            ApplyRgbRows([&](float* rgb, size_t n) { ClampMatrix(kernel, rgb, n, 3); }, pixels,
+                         width, height, channels, rgb, threads);
         },
         note);
     if (!error.empty())
@@ -169,8 +154,7 @@ std::optional<ClampMatrixKernel> NativeClampMatrix(const OCIO::ConstProcessorRcP
     int at = 0;
     if (n == 2)
     {
-        const auto range =
-            OCIO::DynamicPtrCast<const OCIO::RangeTransform>(group->getTransform(0));
+        const auto range = OCIO::DynamicPtrCast<const OCIO::RangeTransform>(group->getTransform(0));
         if (!range || range->getStyle() != OCIO::RANGE_CLAMP || !range->hasMinInValue() ||
             !range->hasMaxInValue() || !range->hasMinOutValue() || !range->hasMaxOutValue() ||
             range->getMinInValue() != range->getMinOutValue() ||

@@ -200,8 +200,7 @@ Light PlatesRequest::idt(Reporter& reporter) const
     return ResolveIlluminant(idtLight, reporter);
 }
 
-MethodSpec PlatesRequest::apply(MethodSpec method,
-                                const std::shared_ptr<const SpectralCamera>& cam,
+MethodSpec PlatesRequest::apply(MethodSpec method, const std::shared_ptr<const SpectralCamera>& cam,
                                 Reporter& reporter) const
 {
     method.plates = parsed();
@@ -281,10 +280,9 @@ int CheckedLutSize(int size, const std::string& parameter)
 {
     if (size < defaults::MIN_LUT_SIZE || size > defaults::MAX_LUT_SIZE)
     {
-        throw ParameterError("{" + parameter + "} must be " +
-                             std::to_string(defaults::MIN_LUT_SIZE) + " to " +
-                             std::to_string(defaults::MAX_LUT_SIZE) + ", got " +
-                             std::to_string(size));
+        throw ParameterError(
+            "{" + parameter + "} must be " + std::to_string(defaults::MIN_LUT_SIZE) + " to " +
+            std::to_string(defaults::MAX_LUT_SIZE) + ", got " + std::to_string(size));
     }
     return size;
 }

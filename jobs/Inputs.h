@@ -66,8 +66,8 @@ struct PlatesRequest
 {
     std::string plates = defaults::PLATES;          ///< "balanced" or "lit" (accuracy: "both")
     std::string adaptation = defaults::ADAPTATION;  ///< "cat02" or "bradford"
-    std::string camera;  ///< a camera sensitivities file, or "" for none
-    std::string idtLight = defaults::IDT_LIGHT;  ///< the light of the camera's one fixed IDT
+    std::string camera;                             ///< a camera sensitivities file, or "" for none
+    std::string idtLight = defaults::IDT_LIGHT;     ///< the light of the camera's one fixed IDT
 
     /// The parsed convention (plates "both" is refused here).
     Plates parsed() const;

@@ -14,8 +14,9 @@ namespace bandlight::jobs
 struct LutRequest
 {
     RelightRequest relight;
-    std::string out;                         ///< the LUT file
-    std::string format = defaults::LUT_FORMAT;  ///< clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini
+    std::string out;  ///< the LUT file
+    std::string format =
+        defaults::LUT_FORMAT;  ///< clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini
     /// 3D LUT points per axis (default defaults::LUT_SIZE); for CLF/CTF,
     /// giving it bakes a 3D LUT instead of the exact matrix.
     std::optional<int> size;

@@ -21,11 +21,11 @@ struct PackageRequest
 
 struct PackageResult
 {
-    int looks = 0;        ///< looks in each config
-    size_t lights = 0;    ///< illuminants
-    size_t methods = 0;   ///< methods
-    std::string workingSpace;          ///< the config's name for it
-    std::vector<std::string> charts;   ///< the chart images written, as <out>/<name>.exr and .png
+    int looks = 0;                    ///< looks in each config
+    size_t lights = 0;                ///< illuminants
+    size_t methods = 0;               ///< methods
+    std::string workingSpace;         ///< the config's name for it
+    std::vector<std::string> charts;  ///< the chart images written, as <out>/<name>.exr and .png
 };
 
 PackageResult MakePackage(const PackageRequest& request, Reporter& reporter = SilentReporter());

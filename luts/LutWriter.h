@@ -37,7 +37,7 @@ const char* LutExtension(LutFormat format);
 struct LutOptions
 {
     LutFormat format = LutFormat::CLF;
-    int size = 33;              ///< lattice points per axis for 3D LUTs (2–129; defaults::LUT_SIZE)
+    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; defaults::LUT_SIZE)
     bool forceLattice = false;  ///< bake a 3D LUT even where a matrix fits (CLF/CTF)
     ShaperSpec shaper;
     std::string description;  ///< written into formats that carry metadata

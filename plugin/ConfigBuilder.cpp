@@ -486,7 +486,8 @@ BaseTransforms(const OCIO::ConstConfigRcPtr& base)
     for (const OCIO::ConstColorSpaceRcPtr& cs : AllColorSpaces(base))
     {
         const std::string name = cs->getName();
-        for (const auto dir : {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
+        for (const auto dir :
+             {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
         {
             const OCIO::ConstTransformRcPtr t = cs->getTransform(dir);
             if (!t)

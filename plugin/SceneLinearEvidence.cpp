@@ -313,11 +313,11 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
     }
     if (findings.empty())
     {
-        throw ParameterError("cannot tell the primaries of the base config's scene_linear space '" +
-                        slName +
-                        "': no interchange role, and no colour space of the config is a standard "
-                        "encoding (linear, sRGB, gamma, BT.709) of standard primaries or CIE XYZ "
-                        "measured from it: give {working_space}");
+        throw ParameterError(
+            "cannot tell the primaries of the base config's scene_linear space '" + slName +
+            "': no interchange role, and no colour space of the config is a standard "
+            "encoding (linear, sRGB, gamma, BT.709) of standard primaries or CIE XYZ "
+            "measured from it: give {working_space}");
     }
     // The most trusted evidence decides; anything as trusted must agree.
     const int best =
@@ -338,8 +338,8 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
         else if (f.primaries != chosen->primaries)
         {
             throw ParameterError("the base config's scene_linear space '" + slName +
-                            "' has conflicting evidence: " + chosen->evidence + "; but " +
-                            f.evidence + ": give {working_space}");
+                                 "' has conflicting evidence: " + chosen->evidence + "; but " +
+                                 f.evidence + ": give {working_space}");
         }
     }
     return {chosen->primaries, chosen->evidence};

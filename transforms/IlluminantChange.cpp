@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <iterator>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -18,9 +18,9 @@
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
 #include "transforms/Methods.h"
-#include "transforms/detail/LinearFits.h"
 #include "transforms/SpectralMethods.h"
 #include "transforms/Upsampler.h"
+#include "transforms/detail/LinearFits.h"
 
 #include <thread>
 
@@ -105,11 +105,11 @@ Mat3 AdaptationFit(const Light& from, const Light& to, const MethodSpec& method,
                    const RgbSpace& working, Observer observer)
 {
     const Mat3 m = RgbToXyzMatrix(working.chromaticities);
-    const AdaptationMethod cat = method.method == ChangeMethod::VON_KRIES
-                                     ? AdaptationMethod::XYZ_SCALING
-                                 : method.method == ChangeMethod::BRADFORD ? AdaptationMethod::BRADFORD
-                                 : method.method == ChangeMethod::PREFILTER ? AdaptationMethod::SHARP
-                                                                            : AdaptationMethod::CAT02;
+    const AdaptationMethod cat =
+        method.method == ChangeMethod::VON_KRIES   ? AdaptationMethod::XYZ_SCALING
+        : method.method == ChangeMethod::BRADFORD  ? AdaptationMethod::BRADFORD
+        : method.method == ChangeMethod::PREFILTER ? AdaptationMethod::SHARP
+                                                   : AdaptationMethod::CAT02;
     return m.inverse() * AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer), cat) * m;
 }
 
@@ -128,8 +128,8 @@ Mat3 MetamerFit(const Light& from, const Light& to, const MethodSpec&, const Rgb
                          SurfaceRenderer(to.spectrum, working, observer));
 }
 
-Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method,
-             const RgbSpace& working, Observer observer)
+Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method, const RgbSpace& working,
+             Observer observer)
 {
     const Mat3 m = RgbToXyzMatrix(working.chromaticities);
     const Mat3 mInv = m.inverse();
@@ -413,11 +413,10 @@ void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) c
     }
     if (m_rootpoly)
     {
-        ParallelFor(count, count < 65536 ? 1 : threads,
-                    [&](size_t begin, size_t end) {
-                        RootPolyPixels(m_rootpolyKernel, pixels + begin * stride, end - begin,
-                                       stride);
-                    });
+        ParallelFor(
+            count, count < 65536 ? 1 : threads,
+            [&](size_t begin, size_t end)
+            { RootPolyPixels(m_rootpolyKernel, pixels + begin * stride, end - begin, stride); });
         return;
     }
     if (stride != 3)

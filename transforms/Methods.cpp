@@ -34,9 +34,8 @@ bool ParseExact(const std::string& name, MethodSpec& spec, const char* canonical
     return true;
 }
 
-#define BANDLIGHT_EXACT(M, NAME)                                    \
-    [](const std::string& n, MethodSpec& s)                         \
-    { return ParseExact<ChangeMethod::M>(n, s, NAME); }
+#define BANDLIGHT_EXACT(M, NAME) \
+    [](const std::string& n, MethodSpec& s) { return ParseExact<ChangeMethod::M>(n, s, NAME); }
 
 /// rootpoly / rootpoly2 / rootpoly3, with `suffix` ("" or "-camera").
 bool ParseRootPoly(const std::string& n, MethodSpec& m, ChangeMethod method,
@@ -108,8 +107,7 @@ std::string DescribeBand(const MethodSpec& m)
     std::ostringstream s;
     if (m.method == ChangeMethod::BAND)
     {
-        s << "The lecture's " << m.bands.size() << "-band model: each band ("
-          << m.bands.describe()
+        s << "The lecture's " << m.bands.size() << "-band model: each band (" << m.bands.describe()
           << " nm) scaled by the ratio of the lights' band means, white luminance kept; "
              "not exact on white, wrong where lights and surfaces are spiky.";
     }

@@ -157,8 +157,8 @@ void ClampMatrixSimd(const ClampMatrixKernel* k, float* HWY_RESTRICT px, size_t 
         *done);
 }
 
-void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t count,
-                  size_t stride, size_t* done)
+void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t count, size_t stride,
+                  size_t* done)
 {
     const float(*c)[13] = k->coefficients;
     ForEachBlock(
@@ -174,9 +174,14 @@ void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t co
             }
             // max(x, 0) as (0 < x ? x : 0) on every target: -0 becomes +0.
             const V z = hn::Zero(d);
-            const V rp = hn::IfThenElse(hn::Lt(z, r), r, z), gp = hn::IfThenElse(hn::Lt(z, g), g, z),
+            const V rp = hn::IfThenElse(hn::Lt(z, r), r, z),
+                    gp = hn::IfThenElse(hn::Lt(z, g), g, z),
                     bp = hn::IfThenElse(hn::Lt(z, b), b, z);
-            V t[13] = {r, g, b, hn::Sqrt(hn::Mul(rp, gp)), hn::Sqrt(hn::Mul(gp, bp)),
+            V t[13] = {r,
+                       g,
+                       b,
+                       hn::Sqrt(hn::Mul(rp, gp)),
+                       hn::Sqrt(hn::Mul(gp, bp)),
                        hn::Sqrt(hn::Mul(rp, bp))};
             const int terms = k->degree == 3 ? 13 : 6;
             if (terms == 13)

@@ -44,8 +44,7 @@ void ClampMatrixReference(const ClampMatrixKernel& k, float* pixels, size_t coun
 /// (each channel clamped to ±PIXEL_GUARD, NaN to −PIXEL_GUARD) and no offset.
 ClampMatrixKernel GuardedMatrixKernel(const Matrix3f& m) noexcept;
 void GuardedMatrix(const Matrix3f& m, float* pixels, size_t count, size_t stride) noexcept;
-void GuardedMatrixReference(const Matrix3f& m, float* pixels, size_t count,
-                            size_t stride) noexcept;
+void GuardedMatrixReference(const Matrix3f& m, float* pixels, size_t count, size_t stride) noexcept;
 
 /// A root polynomial as the kernel takes it: degree 2 (6 terms) or 3 (13),
 /// its 3 × terms coefficients, and an optional 3×3 applied to the guarded

@@ -46,8 +46,8 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
 }
 
 std::pair<double, double> WorstExposure(const std::vector<AccuracyRow>& rows,
-                                        const std::string& method, const std::string& set,
-                                        Filter f, const std::vector<double>& exposures,
+                                        const std::string& method, const std::string& set, Filter f,
+                                        const std::vector<double>& exposures,
                                         const Pairs& onlyPairs)
 {
     std::pair<double, double> worst{1.0, -1.0};

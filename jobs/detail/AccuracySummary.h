@@ -41,8 +41,8 @@ Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& metho
 
 /// The exposure whose mean is worst, and that mean.
 std::pair<double, double> WorstExposure(const std::vector<AccuracyRow>& rows,
-                                        const std::string& method, const std::string& set,
-                                        Filter f, const std::vector<double>& exposures,
+                                        const std::string& method, const std::string& set, Filter f,
+                                        const std::vector<double>& exposures,
                                         const Pairs& onlyPairs = {});
 
 /// "2^-8" for 1/256.

@@ -14,8 +14,9 @@ std::string PathText(const py::object& arg, const std::string& what)
 {
     if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
     {
-        throw py::type_error(what + " is a file (str or os.PathLike), not " +
-                             py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+        throw py::type_error(
+            what + " is a file (str or os.PathLike), not " +
+            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
     }
     return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
 }
@@ -99,8 +100,7 @@ The frames a frame set names, as ``--frames`` reads it: "1001-1100",
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
           py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
-          py::arg("threads") = 0, py::arg("skip_existing") = false,
-          py::arg("keep_going") = false,
+          py::arg("threads") = 0, py::arg("skip_existing") = false, py::arg("keep_going") = false,
           (std::string(R"doc(
 Applies a look, or an illuminant change, to an image file or a frame
 sequence through OpenImageIO: the job of ``bandlight apply``. Returns

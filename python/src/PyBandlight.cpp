@@ -212,8 +212,7 @@ void AddErrors(py::module_& m)
             catch (const ParameterError& e)
             {
                 // The library names its parameters; Python spells them as keywords.
-                PyErr_SetString(PyExc_ValueError,
-                                Message(e.spelled(Face::PYTHON).c_str()).c_str());
+                PyErr_SetString(PyExc_ValueError, Message(e.spelled(Face::PYTHON).c_str()).c_str());
             }
             catch (const Exception& e)
             {

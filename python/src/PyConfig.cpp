@@ -109,23 +109,24 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
         result.files.shaper.empty() ? py::object(py::none()) : py::str(result.files.shaper);
     d["lattice"] = result.files.lattice;
     d["output_encoded"] = result.files.outputEncoded;
-    d["shaper_description"] = result.files.lattice
-                                  ? py::object(py::str(result.shaper.describe()))
-                                  : py::object(py::none());
+    d["shaper_description"] = result.files.lattice ? py::object(py::str(result.shaper.describe()))
+                                                   : py::object(py::none());
     return d;
 }
 }  // namespace
 
 void AddConfig(py::module_& m)
 {
-    m.def("config", &Config, py::arg("out") = py::none(), py::kw_only(),
-          py::arg("working_space") = py::none(),
-          py::arg("illuminants") = py::tuple(py::cast(jobs::SplitList(defaults::CONFIG_ILLUMINANTS))),
-          py::arg("methods") = py::none(), py::arg("observer") = defaults::OBSERVER, py::arg("lut_size") = defaults::CONFIG_LUT_SIZE,
-          py::arg("base") = py::none(), py::arg("base_paths") = defaults::BASE_PATHS,
-          py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
-          py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
-          (std::string(R"doc(
+    m.def(
+        "config", &Config, py::arg("out") = py::none(), py::kw_only(),
+        py::arg("working_space") = py::none(),
+        py::arg("illuminants") = py::tuple(py::cast(jobs::SplitList(defaults::CONFIG_ILLUMINANTS))),
+        py::arg("methods") = py::none(), py::arg("observer") = defaults::OBSERVER,
+        py::arg("lut_size") = defaults::CONFIG_LUT_SIZE, py::arg("base") = py::none(),
+        py::arg("base_paths") = defaults::BASE_PATHS, py::arg("plates") = defaults::PLATES,
+        py::arg("adaptation") = defaults::ADAPTATION, py::arg("camera") = py::none(),
+        py::arg("camera_idt") = defaults::IDT_LIGHT,
+        (std::string(R"doc(
 An OCIO v2 config with one look per ordered pair of illuminants and method
 (``<method>_<FROM>_to_<TO>``, and the same as named transforms
 ``relight_<look>``), as ``bandlight config`` writes it; returns the
@@ -144,7 +145,7 @@ studio config (a file, or a PyOpenColorIO.Config) to extend, leaving all it
 has intact; base_paths: its relative search paths rewritten "relative" to
 out or "absolute".
 )doc") + kPlatesDoc)
-              .c_str());
+            .c_str());
     m.def(
         "identify_scene_linear",
         [](const py::object& config)

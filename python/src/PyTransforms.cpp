@@ -49,14 +49,19 @@ PyRelighter MakeRelighter(const py::object& src, const py::object& dst, const st
     }
     const py::tuple state = py::make_tuple(
         py::cast(NamedSpectrum{from.name, from.spectrum}),
-        py::cast(NamedSpectrum{to.name, to.spectrum}), method, working,
-        py::str(observer), spec.training.empty() ? py::object(py::none()) : py::object(trainingState),
-        plates.plates, plates.adaptation,
-        plates.camera.is_none() ? py::object(py::none())
-                                : py::object(py::module_::import("os").attr("fspath")(plates.camera)),
+        py::cast(NamedSpectrum{to.name, to.spectrum}), method, working, py::str(observer),
+        spec.training.empty() ? py::object(py::none()) : py::object(trainingState), plates.plates,
+        plates.adaptation,
+        plates.camera.is_none()
+            ? py::object(py::none())
+            : py::object(py::module_::import("os").attr("fspath")(plates.camera)),
         plates.cameraIdt);
-    return {from.name, to.name, spec.name, space.name,
-            std::make_unique<Relighter>(from, to, spec, space, o), state};
+    return {from.name,
+            to.name,
+            spec.name,
+            space.name,
+            std::make_unique<Relighter>(from, to, spec, space, o),
+            state};
 }
 
 PyRelighter RelighterFromState(const py::tuple& t)
@@ -65,10 +70,10 @@ PyRelighter RelighterFromState(const py::tuple& t)
     {
         throw Exception("Relighter: invalid pickled state");
     }
-    return MakeRelighter(t[0], t[1], t[2].cast<std::string>(), t[3].cast<std::string>(), t[4], t[5],
-                         PlatesArgs{t[6].cast<std::string>(), t[7].cast<std::string>(),
-                                    py::reinterpret_borrow<py::object>(t[8]),
-                                    t[9].cast<std::string>()});
+    return MakeRelighter(
+        t[0], t[1], t[2].cast<std::string>(), t[3].cast<std::string>(), t[4], t[5],
+        PlatesArgs{t[6].cast<std::string>(), t[7].cast<std::string>(),
+                   py::reinterpret_borrow<py::object>(t[8]), t[9].cast<std::string>()});
 }
 
 std::string ShapeOf(const py::array& a)

@@ -296,9 +296,10 @@ TEST_CASE("apply runs over a frame range for farm splits", "[cli][oiio]")
     CHECK_THAT(missing.err, Contains("seq.1004.exr: cannot read image"));
 }
 
-TEST_CASE("apply takes farm frame sets, resumes with --skip-existing, and --keep-going names "
-          "the bad frame",
-          "[cli][oiio][farm]")
+TEST_CASE(
+    "apply takes farm frame sets, resumes with --skip-existing, and --keep-going names "
+    "the bad frame",
+    "[cli][oiio][farm]")
 {
     for (int f = 1001; f <= 1006; ++f)
     {
@@ -311,7 +312,8 @@ TEST_CASE("apply takes farm frame sets, resumes with --skip-existing, and --keep
         std::remove(Temp("farmout." + std::to_string(f) + ".exr").c_str());
     }
     // A step and a list: 1001, 1003, 1005 and 1006.
-    Result r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1005x2,1006");
+    Result r =
+        Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1005x2,1006");
     INFO(r.err);
     REQUIRE(r.code == 0);
     CHECK_THAT(r.out, Contains("to 4 frames in "));

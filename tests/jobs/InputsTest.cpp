@@ -26,9 +26,10 @@ struct Collect : jobs::Reporter
 
 TEST_CASE("ParameterError spells its parameters as each face does", "[jobs]")
 {
-    const ParameterError e("method 'x' needs the camera ({camera=}FILE); give {working_space}, "
-                           "use {shaper=}none, drop {no_cost}; {src}/{dst}; "
-                           "render: {output: acescg}");
+    const ParameterError e(
+        "method 'x' needs the camera ({camera=}FILE); give {working_space}, "
+        "use {shaper=}none, drop {no_cost}; {src}/{dst}; "
+        "render: {output: acescg}");
     CHECK(std::string(e.what()) ==
           "method 'x' needs the camera (camera = FILE); give working_space, use shaper = none, "
           "drop no_cost; src/dst; render: {output: acescg}");

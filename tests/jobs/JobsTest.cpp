@@ -3,8 +3,8 @@
 // writes for the same request: the two faces must agree byte for byte.
 #include <cstdlib>
 #include <filesystem>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -191,8 +191,7 @@ TEST_CASE("the apply job writes the command's image, and names its parameters", 
     const jobs::ApplyResult result = jobs::ApplyImages(request);
     CHECK(result.frames == 1);
     CHECK(result.applied == "bradford_A_to_D65");
-    REQUIRE(test::Bandlight("apply '" + dir + "/plate.exr' '" + dir +
-                            "/cli.exr' --from A --to D65")
+    REQUIRE(test::Bandlight("apply '" + dir + "/plate.exr' '" + dir + "/cli.exr' --from A --to D65")
                 .code == 0);
     const std::vector<float> lib = ReadPixels(dir + "/lib.exr");
     REQUIRE(lib.size() == px.size());

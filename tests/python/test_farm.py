@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""docs/farm/: each farm template's command, expanded for one chunk as the
+"""docs/renderfarm/: each farm template's command, expanded for one chunk as the
 farm would expand it, runs and writes that chunk's frames."""
 
 import importlib.util
@@ -12,7 +12,7 @@ import OpenImageIO as oiio
 
 from conftest import SOURCE_DIR, _exe, run_cli
 
-FARM = SOURCE_DIR / "docs" / "farm"
+FARM = SOURCE_DIR / "docs" / "renderfarm"
 
 
 def make_show(tmp_path):

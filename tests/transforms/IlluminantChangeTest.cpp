@@ -75,7 +75,8 @@ TEST_CASE("band3 and band3-wp agree when the lights are the same", "[transforms]
     const RgbSpace& ws = FindRgbSpace("acescg");
     for (const char* method : {"none", "vonkries", "bradford", "band3", "band3-wp", "band10"})
     {
-        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), test::LitMethod(method), ws).isIdentity(1e-12));
+        CHECK(IlluminantChangeMatrix(L("F2"), L("F2"), test::LitMethod(method), ws)
+                  .isIdentity(1e-12));
     }
 }
 

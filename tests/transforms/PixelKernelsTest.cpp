@@ -89,8 +89,7 @@ TEST_CASE("The root polynomial kernels equal their scalar references bit for bit
         for (const bool balanced : {false, true})
         {
             MethodSpec spec = test::LitMethod(method);
-            spec.plates.convention =
-                balanced ? PlateConvention::BALANCED : PlateConvention::LIT;
+            spec.plates.convention = balanced ? PlateConvention::BALANCED : PlateConvention::LIT;
             const Relighter r(L("F11"), L("D65"), spec, ws);
             RootPolyKernelData k;
             k.degree = r.rootPolynomial()->degree();

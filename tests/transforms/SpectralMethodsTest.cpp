@@ -41,7 +41,8 @@ TEST_CASE("fit3x3, prefilter and metamer map S1's white to S2's", "[transforms][
         for (const char* method : {"fit3x3", "prefilter", "metamer"})
         {
             INFO(method << " " << from << " → " << to);
-            const Mat3 m = IlluminantChangeMatrix(L(from), L(to), test::LitMethod(method), Working());
+            const Mat3 m =
+                IlluminantChangeMatrix(L(from), L(to), test::LitMethod(method), Working());
             CHECK((m * r1.white() - r2.white()).norm() < 1e-6);
         }
     }
@@ -51,7 +52,8 @@ TEST_CASE("fit3x3 beats Bradford on the colours it was fitted on", "[transforms]
 {
     const SurfaceRenderer r1(BuiltinIlluminant("F11"), Working());
     const SurfaceRenderer r2(BuiltinIlluminant("D65"), Working());
-    const Mat3 fit = IlluminantChangeMatrix(L("F11"), L("D65"), test::LitMethod("fit3x3"), Working());
+    const Mat3 fit =
+        IlluminantChangeMatrix(L("F11"), L("D65"), test::LitMethod("fit3x3"), Working());
     const Mat3 brad =
         IlluminantChangeMatrix(L("F11"), L("D65"), test::LitMethod("bradford"), Working());
     double eFit = 0.0, eBrad = 0.0;
@@ -122,7 +124,8 @@ TEST_CASE("spectral is the reference, not an image transform", "[transforms][met
 {
     CHECK_THROWS_WITH(Relighter(L("A"), L("D65"), test::LitMethod("spectral"), Working()),
                       Contains("needs the spectra of the surfaces"));
-    CHECK_THROWS_WITH(IlluminantChangeMatrix(L("A"), L("D65"), test::LitMethod("upsample"), Working()),
-                      Contains("is not one 3x3"));
+    CHECK_THROWS_WITH(
+        IlluminantChangeMatrix(L("A"), L("D65"), test::LitMethod("upsample"), Working()),
+        Contains("is not one 3x3"));
     CHECK(AllMethodNames().size() == 14);
 }

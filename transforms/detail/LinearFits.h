@@ -15,8 +15,8 @@ Mat3 IdentityFit(const Light&, const Light&, const MethodSpec&, const RgbSpace&,
 Mat3 AdaptationFit(const Light& from, const Light& to, const MethodSpec& method,
                    const RgbSpace& working, Observer observer);
 /// band, band-wp: a diagonal in band space.
-Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method,
-             const RgbSpace& working, Observer observer);
+Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method, const RgbSpace& working,
+             Observer observer);
 /// fit3x3: least squares on the training remittances.
 Mat3 LeastSquaresFit(const Light& from, const Light& to, const MethodSpec& method,
                      const RgbSpace& working, Observer observer);
