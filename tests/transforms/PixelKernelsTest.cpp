@@ -42,7 +42,9 @@ std::vector<float> HardPixels(size_t count, size_t stride, unsigned seed)
 
 bool SameBits(const std::vector<float>& a, const std::vector<float>& b)
 {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * 4) == 0;
+    // (memcmp takes no null pointer, which an empty vector's data() may be.)
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
 Light L(const char* n)
