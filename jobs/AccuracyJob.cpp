@@ -238,11 +238,16 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
                       std::to_string(options.sets.size()) + " reflectance sets");
     std::mutex mu;
     int lastTenth = -1;
+    double lastFraction = 0.0;
     result.rows = MeasureAccuracy(
         options,
-        [&](double f)
+        [&](double done)
         {
             std::lock_guard<std::mutex> lock(mu);
+            // Pairs finish on several threads and their reports can arrive
+            // out of order: what the reporter sees only grows.
+            lastFraction = std::max(lastFraction, done);
+            const double f = lastFraction;
             const int tenth = int(f * 10.0);
             std::string line;
             if (tenth != lastTenth)
