@@ -20,6 +20,8 @@ struct AccuracyCommandOptions
     std::string methods;
     std::vector<std::string> reflectances;
     bool noCost = false;
+    std::string from;
+    std::string to;
     jobs::AccuracyRequest request;
 };
 
@@ -36,6 +38,18 @@ void RunAccuracy(AccuracyCommandOptions& o)
     {
         r.sets.push_back(jobs::ReflectanceSetFromFile(file));
     }
+    if (!o.from.empty())
+    {
+        r.imageOptions.from = jobs::ResolveIlluminant(o.from, reporter);
+    }
+    if (!o.to.empty())
+    {
+        r.imageOptions.to = jobs::ResolveIlluminant(o.to, reporter);
+    }
+    if ((!o.from.empty() || !o.to.empty()) && r.images.empty())
+    {
+        throw Exception("--from and --to name the lights of --image");
+    }
     r.cost = !o.noCost;
     // With --json - stdout carries the JSON alone.
     const bool toStdout = r.json == "-";
@@ -51,6 +65,12 @@ void RunAccuracy(AccuracyCommandOptions& o)
     else
     {
         std::cout << jobs::AccuracyReport(result);
+    }
+    for (const jobs::HeatmapSummary& h : result.heatmaps)
+    {
+        std::cerr << "accuracy: " << h.method << " over the image: CIEDE2000 mean "
+                  << Fixed(h.mean, 3) << ", p95 " << Fixed(h.p95, 3) << ", max " << Fixed(h.max, 3)
+                  << "\n";
     }
     for (const std::string& file : result.written)
     {
@@ -73,6 +93,15 @@ void AddAccuracyCommand(CLI::App& app)
                         JoinNames(AllMethodNames()) + ")");
     cmd->add_option("--reflectances", o->reflectances,
                     "CSV or CGATS file of remittances to add as a set (repeatable)");
+    cmd->add_option("--image", o->request.images,
+                    "Spectral EXR to add as a set, its pixels as remittances (repeatable; see "
+                    "`spectral`)");
+    cmd->add_option("--from", o->from,
+                    "With --image: the light of the shot (emissive images are divided by it)");
+    cmd->add_option("--to", o->to, "With --image: the light to relight to");
+    cmd->add_option("--heatmaps", o->request.heatmaps,
+                    "With --image: write a CIEDE2000 map per method into DIR (EXR, and PNG "
+                    "with its scale)");
     cmd->add_option("--working-space", o->request.workingSpace, "Working space")
         ->capture_default_str();
     cmd->add_option("--json", o->request.json,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <Eigen/LU>
@@ -13,12 +14,15 @@
 #include "cli/Common.h"
 #include "jobs/ImageApply.h"
 #include "jobs/RenderJob.h"
+#include "jobs/SpectralJob.h"
 #include "plugin/ConfigBuilder.h"
+#include "render/SceneColour.h"
 #include "render/SceneRenderer.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
+#include "spectral/SpectralImage.h"
 #include "transforms/Accuracy.h"
 
 namespace bandlight::cli
@@ -40,6 +44,7 @@ struct RenderOptions
     bool explain = false;
     bool compare = false;
     bool unplanned = false;
+    bool spectra = false;
     int threads = 0;
 };
 
@@ -87,7 +92,7 @@ std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working
 /// Adds the render (and its sRGB preview) to `outputs`; returns what to
 /// report once the set is written.
 std::string Write(const RenderedImage& img, const std::string& out, const std::string& space,
-                  const BandSet& bands, OutputSet& outputs)
+                  const BandSet& bands, const RenderedImage* spectra, OutputSet& outputs)
 {
     std::ostringstream report;
     if (space == "bands")
@@ -97,6 +102,14 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
         d.attributes.push_back(
             {"bandlight:channels", "band values (radiometric), not RGB: " + bands.describe()});
         d.attributes.push_back({"bandlight:colorSpace", "bands"});
+        // Each channel's band, for readers (bandlight spectral reads them as buckets).
+        std::string list;
+        for (const Band& b : bands)
+        {
+            list += (list.empty() ? "" : ",") + b.name + " " + Fixed(b.minNm, 3) + "-" +
+                    Fixed(b.maxNm, 3);
+        }
+        d.attributes.push_back({"bandlight:bands", list});
         d.attributes.push_back({"colorInteropID", "data"});
         WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
                    PixelType::FLOAT, &outputs);
@@ -106,10 +119,26 @@ std::string Write(const RenderedImage& img, const std::string& out, const std::s
     }
     const RgbSpace& rgb = FindRgbSpace(space);
     const ImageDescription linear = LinearImageDescription(rgb, ColorSpaceName(rgb));
-    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
-               linear, PixelType::FLOAT, &outputs);
-    report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
-           << " channels, " << ColorSpaceName(rgb) << ")\n";
+    if (spectra)
+    {
+        std::vector<double> wavelengths;
+        for (const std::string& name : spectra->channelNames)
+        {
+            wavelengths.push_back(ParseSpectralChannel(name)->wavelengthNm);
+        }
+        jobs::WriteSpectralImage(out, img.width, img.height, SpectralKind::EMISSIVE, wavelengths,
+                                 spectra->pixels, img.pixels, linear, &outputs);
+        report << "Wrote " << out << " (" << img.width << "x" << img.height << ", R, G, B in "
+               << ColorSpaceName(rgb) << " and " << wavelengths.size()
+               << " spectral radiance channels, Fichet 2021 layout)\n";
+    }
+    else
+    {
+        WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
+                   linear, PixelType::FLOAT, &outputs);
+        report << "Wrote " << out << " (" << img.width << "x" << img.height << ", " << img.channels
+               << " channels, " << ColorSpaceName(rgb) << ")\n";
+    }
     const std::string png = Stem(out) + ".png";
     const std::vector<float> preview = SrgbPreview(img, rgb);
     ImageDescription srgb;
@@ -145,7 +174,25 @@ void RunRender(const RenderOptions& o)
               << " attenuation, " << counters.spectralSamples << " per-pixel spectral samples\n";
     // The render, its preview and (with --compare) the heat maps are one set.
     OutputSet outputs;
-    std::string report = Write(img, out, scene.settings.output, scene.settings.bands, outputs);
+    std::optional<RenderedImage> spectra;
+    if (o.spectra)
+    {
+        if (scene.settings.mode != RenderSettings::Mode::SPECTRAL)
+        {
+            throw Exception(
+                "--spectra needs spectral mode (--mode spectral): band mode has no "
+                "spectrum to write");
+        }
+        if (scene.settings.output == "bands")
+        {
+            throw Exception("--spectra writes R, G, B beside the spectrum: give an RGB output");
+        }
+        Scene radiance = scene;
+        radiance.settings.output = detail::SPECTRUM_OUTPUT;
+        spectra = RenderScene(radiance, PlanScene(radiance), o.threads);
+    }
+    std::string report = Write(img, out, scene.settings.output, scene.settings.bands,
+                               spectra ? &*spectra : nullptr, outputs);
 
     if (!o.compare)
     {
@@ -231,6 +278,9 @@ void AddRenderCommand(CLI::App& app)
                   "Also render the spectral reference; write a ΔE00 heat map and a summary");
     cmd->add_flag("--unplanned", o->unplanned,
                   "Evaluate every term per pixel and sample (the reference for the planner)");
+    cmd->add_flag("--spectra", o->spectra,
+                  "Spectral mode: write the spectral radiance into the EXR too, as S0.<nm> "
+                  "channels beside R, G, B (Fichet 2021 layout; read by bandlight spectral)");
     cmd->add_option("--threads", o->threads, "Threads (0: all cores; at most 256)")
         ->check(CLI::Range(0, kMaxThreads))
         ->capture_default_str();

@@ -17,5 +17,6 @@ void AddPackageCommand(CLI::App& app);
 void AddAccuracyCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
+void AddSpectralCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -37,6 +37,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddAccuracyCommand(app);
     bandlight::cli::AddPlotCommand(app);
     bandlight::cli::AddRenderCommand(app);
+    bandlight::cli::AddSpectralCommand(app);
     // Messages may quote file names and values of any length and content:
     // one line, bounded.
     const auto fail = [&capture](int code, const std::string& prefix, const char* what)

@@ -141,6 +141,20 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     options.workingSpace = r.workingSpace;
     FindRgbSpace(r.workingSpace);
     options.observer = ParseObserver(r.observer);
+    if (!r.images.empty() && r.lights.empty())
+    {
+        if (r.imageOptions.from.spectrum.empty() || r.imageOptions.to.spectrum.empty())
+        {
+            throw ParameterError(
+                "{image} is measured for one change of light: give {src=}S1 and "
+                "{dst=}S2 (or {illuminants})");
+        }
+        options.lights = {r.imageOptions.from, r.imageOptions.to};
+    }
+    if (!r.heatmaps.empty() && r.images.empty())
+    {
+        throw ParameterError("{heatmaps} maps the error over a spectral image: give {image}");
+    }
     if (!r.lights.empty())
     {
         options.lights = r.lights;
@@ -187,6 +201,14 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     for (const ReflectanceSet& s : r.sets)
     {
         options.sets.push_back(s);
+    }
+    SpectralOptions imageOptions = r.imageOptions;
+    imageOptions.workingSpace = r.workingSpace;
+    imageOptions.observer = r.observer;
+    for (const std::string& image : r.images)
+    {
+        options.sets.push_back(
+            ReflectanceSetFromSpectralImage(image, imageOptions, kMaxImageSamples, reporter));
     }
     if (options.sets.empty())
     {
@@ -277,6 +299,28 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         result.setupCost = MeasureSetupCost(options.workingSpace);
     }
     result.costAllThreads = CostAllThreads(result.cost);
+
+    if (!r.heatmaps.empty())
+    {
+        // The maps are drawn for the default plate convention when both are
+        // measured.
+        imageOptions.plates = r.plates;
+        if (imageOptions.plates.plates == "both")
+        {
+            imageOptions.plates.plates = defaults::PLATES;
+        }
+        for (const std::string& image : r.images)
+        {
+            reporter.progress("accuracy: heat maps of " + image);
+            for (HeatmapSummary& h :
+                 WriteAccuracyHeatmaps(image, imageOptions, options.methods, r.heatmaps, reporter))
+            {
+                result.written.push_back(h.exr);
+                result.written.push_back(h.png);
+                result.heatmaps.push_back(std::move(h));
+            }
+        }
+    }
 
     // The JSON file and the plot are one set of outputs.
     OutputSet outputs;

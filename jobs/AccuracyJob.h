@@ -7,6 +7,7 @@
 
 #include "jobs/Cost.h"
 #include "jobs/Inputs.h"
+#include "jobs/SpectralAccuracy.h"
 #include "transforms/Accuracy.h"
 
 namespace bandlight::jobs
@@ -32,6 +33,14 @@ struct AccuracyRequest
     bool cost = true;   ///< time every method (a few seconds)
     /// "both" (default: balanced and lit), "balanced" or "lit".
     PlatesRequest plates{"both", defaults::ADAPTATION, "", defaults::IDT_LIGHT};
+    /// Spectral images measured as sets, each named after its file: every
+    /// method on the image's pixels (as remittances) against the exact
+    /// relight. `imageOptions.from` is the light an emissive image was lit
+    /// by; with images and no `lights`, the lights are from and to.
+    std::vector<std::string> images;
+    SpectralOptions imageOptions;
+    /// With images: a ΔE00 map per image and method in this folder ("" none).
+    std::string heatmaps;
     std::string json;  ///< write the JSON document to this file ("" none)
     std::string plot;  ///< draw accuracy against cost into this .png or .svg ("" none)
 };
@@ -48,7 +57,8 @@ struct AccuracyResult
     /// Each method's cost on all threads as one applies it to an image (the
     /// 3×3 methods share the median of their timings), ns a pixel.
     std::map<std::string, double> costAllThreads;
-    std::vector<std::string> written;  ///< the files written (json, plot)
+    std::vector<HeatmapSummary> heatmaps;  ///< with request.heatmaps
+    std::vector<std::string> written;      ///< the files written (json, plot, heat maps)
 };
 
 /// Measures `request` and writes its JSON document and plot, as one set.

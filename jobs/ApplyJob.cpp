@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/ApplyJob.h"
 
-#include <chrono>
-#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -106,55 +104,13 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     };
 
     result.native = kernel.has_value() || bool(native);
-    if (r.frames.empty())
-    {
-        if (HasFramePattern(r.input))
-        {
-            throw ParameterError("'" + r.input + "' is a frame pattern: give {frames=}FIRST-LAST");
-        }
-        applyOne(r.input, r.output);
-        result.frames = 1;
-        return result;
-    }
-    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
-    {
-        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
-    }
-    const std::vector<int> frames = ParseFrameRange(r.frames);
-    const auto t0 = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < frames.size(); ++i)
-    {
-        const int f = frames[i];
-        const std::string out = ExpandFramePattern(r.output, f);
-        std::string state = "done";
-        if (r.skipExisting && std::filesystem::exists(out))
-        {
-            ++result.skipped;
-            state = "skipped (exists)";
-        }
-        else
-        {
-            try
-            {
-                applyOne(ExpandFramePattern(r.input, f), out);
-                ++result.frames;
-            }
-            catch (const std::exception& e)
-            {
-                if (!r.keepGoing)
-                {
-                    throw;
-                }
-                result.failed.push_back({f, e.what()});
-                state = "failed";
-            }
-        }
-        reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
-                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")",
-                          double(i + 1) / double(frames.size()));
-    }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    result.sequence = true;
+    const FrameRun run =
+        RunFrameSet({r.input, r.output, r.frames, r.skipExisting, r.keepGoing}, reporter, applyOne);
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
     return result;
 }
 

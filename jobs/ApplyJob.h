@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "jobs/Frames.h"
 #include "jobs/Inputs.h"
 
 namespace bandlight::jobs
@@ -32,13 +33,6 @@ struct ApplyRequest
     bool skipExisting = false;
     /// A frame that fails does not stop the others; the result lists it.
     bool keepGoing = false;
-};
-
-/// A frame that could not be done, and why.
-struct FrameFailure
-{
-    int frame = 0;
-    std::string error;
 };
 
 struct ApplyResult

@@ -2,7 +2,9 @@
 #include "jobs/Frames.h"
 
 #include <cctype>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <unordered_set>
 
 #include "spectral/Exception.h"
@@ -206,6 +208,63 @@ std::vector<int> ParseFrameRange(const std::string& text)
         }
     }
     return frames;
+}
+
+FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
+                     const std::function<void(const std::string& in, const std::string& out)>& one)
+{
+    FrameRun run;
+    if (r.frames.empty())
+    {
+        if (HasFramePattern(r.input))
+        {
+            throw ParameterError("'" + OneLine(r.input, 200) +
+                                 "' is a frame pattern: give {frames=}FIRST-LAST");
+        }
+        one(r.input, r.output);
+        run.frames = 1;
+        return run;
+    }
+    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
+    {
+        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+    }
+    const std::vector<int> frames = ParseFrameRange(r.frames);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < frames.size(); ++i)
+    {
+        const int f = frames[i];
+        const std::string out = ExpandFramePattern(r.output, f);
+        std::string state = "done";
+        if (r.skipExisting && std::filesystem::exists(out))
+        {
+            ++run.skipped;
+            state = "skipped (exists)";
+        }
+        else
+        {
+            try
+            {
+                one(ExpandFramePattern(r.input, f), out);
+                ++run.frames;
+            }
+            catch (const std::exception& e)
+            {
+                if (!r.keepGoing)
+                {
+                    throw;
+                }
+                run.failed.push_back({f, e.what()});
+                state = "failed";
+            }
+        }
+        reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
+                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")",
+                          double(i + 1) / double(frames.size()));
+    }
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run.sequence = true;
+    return run;
 }
 
 }  // namespace bandlight::jobs

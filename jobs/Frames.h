@@ -4,8 +4,11 @@
 // Frame sequences: patterns (plate.####.exr, plate.%04d.exr) and the frame
 // ranges that name their frames.
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "jobs/Reporter.h"
 
 namespace bandlight::jobs
 {
@@ -26,5 +29,42 @@ constexpr long kMaxFramesPerCall = 1000000;
 /// names, in the order given, each once; at most kMaxFramesPerCall, numbers
 /// of at most 9 digits. Throws Exception with one line naming the text.
 std::vector<int> ParseFrameRange(const std::string& text);
+
+/// A frame that could not be done, and why.
+struct FrameFailure
+{
+    int frame = 0;
+    std::string error;
+};
+
+/// What a run over one image or a frame set did.
+struct FrameRun
+{
+    size_t frames = 0;                 ///< frames written (1 for a single image)
+    size_t skipped = 0;                ///< frames whose output existed (skipExisting)
+    std::vector<FrameFailure> failed;  ///< keepGoing: the frames that failed, in order
+    double seconds = 0.0;              ///< wall time of the frames
+    bool sequence = false;
+};
+
+/// How a job walks its inputs: one image, or the frames of a pattern.
+struct FrameSetRequest
+{
+    std::string input;   ///< an image, or a pattern such as plate.####.exr
+    std::string output;  ///< an image, or a pattern
+    std::string frames;  ///< with patterns: the frames, "1001-1100"
+    /// Frames whose output exists are skipped (outputs are written
+    /// atomically, so an existing file is a complete one).
+    bool skipExisting = false;
+    /// A frame that fails does not stop the others; the run lists it.
+    bool keepGoing = false;
+};
+
+/// Calls `one(in, out)` for the image, or for each frame of the set in
+/// order, reporting progress per frame. Without keepGoing the first failing
+/// frame throws (the frames before it are done). Throws ParameterError for
+/// a pattern without frames or frames without patterns.
+FrameRun RunFrameSet(const FrameSetRequest& request, Reporter& reporter,
+                     const std::function<void(const std::string& in, const std::string& out)>& one);
 
 }  // namespace bandlight::jobs

@@ -7,6 +7,7 @@
 // commands should not pay.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +34,20 @@ struct ImageDescription
     std::string writeAs;
 };
 
+/// An image as read: every channel as float, and its header.
+struct ImageData
+{
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<std::string> channelNames;
+    std::vector<std::string> channelTypes;  ///< per channel: "half", "float", "uint8", …
+    /// Every header attribute, its value as text (OIIO's formatting).
+    std::map<std::string, std::string> attributes;
+    std::string format;         ///< OpenImageIO's format name: "openexr", "png", …
+    std::vector<float> pixels;  ///< interleaved, top row first; empty for a header read
+};
+
 /// Processes interleaved float pixels in place: (pixels, width, height,
 /// channels, indices of R, G, B).
 using PixelProcess = std::function<void(float*, long, long, int, const int*)>;
@@ -47,12 +62,15 @@ struct ImageFilesApi
     std::string (*write)(const std::string& path, const float* pixels, int width, int height,
                          int channels, const std::vector<std::string>& channelNames,
                          const ImageDescription& description, PixelType type);
+    /// Reads an image (with `pixels` false, only its header; the size is
+    /// checked against memory before anything is allocated).
+    std::string (*read)(const std::string& path, ImageData& image, bool pixels);
     /// Removes the module's temporary files in flight (async-signal-safe):
     /// the module carries its own copy of AtomicFile's registry.
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 3;
+constexpr int kImageFilesApiVersion = 4;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

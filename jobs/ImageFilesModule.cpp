@@ -172,7 +172,55 @@ std::string WriteImage(const std::string& path, const float* pixels, int width, 
     }
 }
 
-const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &RemoveTemporaryFiles};
+std::string Read(const std::string& path, ImageData& image, bool pixels)
+{
+    try
+    {
+        auto input = OIIO::ImageInput::open(path);
+        if (!input)
+        {
+            throw Exception(path + ": cannot read image: " + OIIO::geterror());
+        }
+        const OIIO::ImageSpec spec = input->spec();
+        CheckImageSize(path, spec);
+        image.width = spec.width;
+        image.height = spec.height * std::max(1, spec.depth);
+        image.channels = spec.nchannels;
+        image.channelNames = spec.channelnames;
+        image.channelTypes.clear();
+        for (int c = 0; c < spec.nchannels; ++c)
+        {
+            image.channelTypes.push_back(spec.channelformat(c).c_str());
+        }
+        image.attributes.clear();
+        for (const OIIO::ParamValue& p : spec.extra_attribs)
+        {
+            image.attributes[p.name().string()] = p.type() == OIIO::TypeDesc::STRING
+                                                      ? std::string(p.get_string())
+                                                      : spec.metadata_val(p, false);
+        }
+        image.format = input->format_name();
+        image.pixels.clear();
+        if (pixels)
+        {
+            image.pixels.resize(spec.image_pixels() * size_t(spec.nchannels));
+            if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                                   image.pixels.data()))
+            {
+                throw Exception(path + ": cannot read pixels: " + input->geterror());
+            }
+        }
+        input->close();
+        return {};
+    }
+    catch (const std::exception& e)
+    {
+        return e.what();
+    }
+}
+
+const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &Read,
+                            &RemoveTemporaryFiles};
 
 }  // namespace
 }  // namespace bandlight::jobs

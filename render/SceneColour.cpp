@@ -11,6 +11,7 @@
 #include "spectral/CieData.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"
+#include "spectral/SpectralImage.h"
 #include "transforms/BandModel.h"
 
 namespace bandlight::detail
@@ -38,6 +39,22 @@ Output MakeOutput(const Scene& s)
         for (const Band& b : s.settings.bands)
         {
             o.names.push_back(b.name);
+        }
+        return o;
+    }
+    if (s.settings.output == SPECTRUM_OUTPUT)
+    {
+        if (s.settings.mode != RenderSettings::Mode::SPECTRAL)
+        {
+            throw Exception("spectral radiance needs spectral mode: band mode has no spectrum");
+        }
+        std::string why;
+        const Grid g = MakeGrid(s.settings, GridStep(s, why));
+        o.spectrum = true;
+        o.channels = g.count;
+        for (int i = 0; i < g.count; ++i)
+        {
+            o.names.push_back(SpectralChannelName(SpectralKind::EMISSIVE, g.wavelength(i)));
         }
         return o;
     }
@@ -204,12 +221,56 @@ std::vector<double> ToChannels(const Output& out, const Vec3& xyz)
     return {rgb.x(), rgb.y(), rgb.z()};
 }
 
+/// Light × remittance on the grid, scaled as Output::spectrum says; each
+/// emission line's power split between its two neighbouring samples, so
+/// the sum against the grid's matching functions is the line's exact
+/// integral against their linear interpolant.
+std::vector<double> ProductSpectrum(const SceneSpectrum& light, double scale,
+                                    const Spectrum& remittance, const Grid& g, const Cmf& cmf)
+{
+    double k = 0.0;  // Σ ȳ·Δλ / N_y over the grid
+    for (const Vec3& w : cmf.weight)
+    {
+        k += w.y();
+    }
+    std::vector<double> v(size_t(g.count), 0.0);
+    if (!light.continuous.empty())
+    {
+        for (int i = 0; i < g.count; ++i)
+        {
+            const double l = g.wavelength(i);
+            v[size_t(i)] = light.continuous(l) * remittance(l) * scale * k;
+        }
+    }
+    for (const SpectralLine& line : light.lines.lines())
+    {
+        if (!g.contains(line.wavelengthNm))
+        {
+            continue;
+        }
+        const double t = (line.wavelengthNm - g.start) / g.step;
+        const int i = std::min(int(t), g.count - 1);
+        const double f = i + 1 < g.count ? t - i : 0.0;
+        const double power = line.power * remittance(line.wavelengthNm) * scale * k / g.step;
+        v[size_t(i)] += power * (1.0 - f);
+        if (f > 0.0)
+        {
+            v[size_t(i) + 1] += power * f;
+        }
+    }
+    return v;
+}
+
 /// One unit of `light` on `remittance`, in the output's channels.
 std::vector<double> ProductColour(const Scene& s, const Output& out, const SceneSpectrum& light,
                                   const Spectrum& remittance, const Grid& grid, const Cmf& cmf)
 {
     const BandSet& bands = s.settings.bands;
     const double scale = LightScale(light, bands);
+    if (out.spectrum)
+    {
+        return ProductSpectrum(light, scale, remittance, grid, cmf);
+    }
     if (s.settings.mode == RenderSettings::Mode::SPECTRAL)
     {
         return ToChannels(out, ProductXyz(light, scale, remittance, grid, cmf));

@@ -15,15 +15,23 @@
 namespace bandlight::detail
 {
 
+/// The output name that asks for the spectral radiance itself (spectral
+/// mode): one channel per grid sample, Fichet 2021 names.
+inline constexpr const char* SPECTRUM_OUTPUT = "spectrum";
+
 struct Output
 {
     bool bands = false;
+    /// Spectral radiance on the grid, scaled so that XYZ = Σ v·cmf·Δλ /
+    /// Σ ȳ·Δλ over the grid (pbrt-v4's convention) is the RGB render's XYZ.
+    bool spectrum = false;
     int channels = 3;
     std::vector<std::string> names;
     Mat3 xyzToRgb = Mat3::Identity();
 };
 
-/// The output's channels: a working space's RGB, or (band mode) the bands.
+/// The output's channels: a working space's RGB, (band mode) the bands, or
+/// (spectral mode, SPECTRUM_OUTPUT) the grid's samples.
 Output MakeOutput(const Scene& s);
 
 /// Band means of a light or remittance (lines count in their band).

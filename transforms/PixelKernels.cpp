@@ -212,6 +212,38 @@ void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t co
         *done);
 }
 
+void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
+                     size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
+{
+    const D d;
+    const size_t lanes = hn::Lanes(d);
+    const size_t body = n - n % lanes;
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float* v = px + p * stride;
+        V a0 = hn::Zero(d), a1 = hn::Zero(d), a2 = hn::Zero(d);
+        for (size_t j = 0; j < body; j += lanes)
+        {
+            const V x = hn::LoadU(d, v + j);
+            a0 = hn::MulAdd(hn::LoadU(d, w + j), x, a0);
+            a1 = hn::MulAdd(hn::LoadU(d, w + n + j), x, a1);
+            a2 = hn::MulAdd(hn::LoadU(d, w + 2 * n + j), x, a2);
+        }
+        float s0 = hn::GetLane(hn::SumOfLanes(d, a0)), s1 = hn::GetLane(hn::SumOfLanes(d, a1)),
+              s2 = hn::GetLane(hn::SumOfLanes(d, a2));
+        for (size_t j = body; j < n; ++j)
+        {
+            s0 += w[j] * v[j];
+            s1 += w[n + j] * v[j];
+            s2 += w[2 * n + j] * v[j];
+        }
+        float* o = out + p * outStride;
+        o[0] = s0;
+        o[1] = s1;
+        o[2] = s2;
+    }
+}
+
 const char* TargetName()
 {
     return hwy::TargetName(HWY_TARGET);
@@ -225,7 +257,33 @@ namespace bandlight
 {
 HWY_EXPORT(ClampMatrixSimd);
 HWY_EXPORT(RootPolySimd);
+HWY_EXPORT(SpectralDotSimd);
 HWY_EXPORT(TargetName);
+
+void SpectralDot(const float* weights, size_t n, const float* pixels, size_t count, size_t stride,
+                 float* out, size_t outStride) noexcept
+{
+    HWY_DYNAMIC_DISPATCH(SpectralDotSimd)(weights, n, pixels, count, stride, out, outStride);
+}
+
+void SpectralDotReference(const float* weights, size_t n, const float* pixels, size_t count,
+                          size_t stride, float* out, size_t outStride) noexcept
+{
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float* v = pixels + p * stride;
+        float* o = out + p * outStride;
+        for (int c = 0; c < 3; ++c)
+        {
+            float s = 0.0f;
+            for (size_t j = 0; j < n; ++j)
+            {
+                s = s + weights[size_t(c) * n + j] * v[j];
+            }
+            o[c] = s;
+        }
+    }
+}
 
 void ClampMatrixReference(const ClampMatrixKernel& k, float* px, size_t count,
                           size_t stride) noexcept

@@ -65,6 +65,17 @@ void RootPolyPixels(const RootPolyKernelData& k, float* pixels, size_t count,
 void RootPolyPixelsReference(const RootPolyKernelData& k, float* pixels, size_t count,
                              size_t stride) noexcept;
 
+/// Spectral integration folded into weights: for each pixel, out[c] =
+/// Σ_j weights[c·n + j] · pixel[j] for c = 0, 1, 2, over `n` consecutive
+/// channels of each pixel (`stride` floats apart), written to `out` (3
+/// floats a pixel, `outStride` apart). The SIMD form sums in lanes and then
+/// across them, so it differs from the sequential reference by rounding
+/// only: at most 2·n·2⁻²⁴ · Σ_j |w_j · v_j| (tested). NaN and Inf propagate.
+void SpectralDot(const float* weights, size_t n, const float* pixels, size_t count, size_t stride,
+                 float* out, size_t outStride) noexcept;
+void SpectralDotReference(const float* weights, size_t n, const float* pixels, size_t count,
+                          size_t stride, float* out, size_t outStride) noexcept;
+
 /// The instruction set the SIMD forms run on here ("AVX2", "SSE4", ...).
 const char* PixelKernelTarget() noexcept;
 

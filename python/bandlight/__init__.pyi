@@ -317,3 +317,20 @@ def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, sourc
 def explain_scene(scene: Optional[StrPath] = None, *, text: Optional[str] = None,
                   source: str = "<scene>", mode: Optional[str] = None,
                   unplanned: bool = False) -> str: ...
+def read_spectral_image(path: StrPath, *,
+                        channels: Union[Mapping[str, float], StrPath, None] = None,
+                        kind: str = "emissive",
+                        sampling: str = "auto") -> Tuple[FloatArray, Float32Array, str, str]: ...
+def spectral_to_rgb(spectra: npt.ArrayLike, wavelengths: npt.ArrayLike, *,
+                    kind: str = "emissive", src: Optional[LightLike] = None,
+                    dst: Optional[LightLike] = None, working_space: str = "acescg",
+                    plates: str = "balanced", adaptation: str = "cat02",
+                    observer: ObserverLike = "1931", sampling: str = "auto",
+                    threads: int = 0) -> Float32Array: ...
+def spectral(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
+             src: Optional[LightLike] = None, dst: Optional[LightLike] = None,
+             working_space: str = "acescg", plates: str = "balanced",
+             adaptation: str = "cat02", observer: ObserverLike = "1931",
+             channels: Union[Mapping[str, float], StrPath, None] = None,
+             kind: str = "emissive", sampling: str = "auto", threads: int = 0,
+             skip_existing: bool = False, keep_going: bool = False) -> Dict[str, Any]: ...

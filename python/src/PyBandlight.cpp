@@ -264,5 +264,6 @@ PYBIND11_MODULE(_bandlight, m)
     AddAccuracy(m);
     AddRender(m);
     AddApply(m);
+    AddSpectralImage(m);
     m.attr("__name__") = ownName;
 }

@@ -45,6 +45,7 @@ void AddConfig(py::module_& m);
 void AddAccuracy(py::module_& m);
 void AddRender(py::module_& m);
 void AddApply(py::module_& m);
+void AddSpectralImage(py::module_& m);
 
 // ---------------------------------------------------------------------------
 // Errors (PyBandlight.cpp).

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `bandlight spectral`: spectral EXRs integrated, or relit exactly, to RGB
+// (jobs/SpectralJob).
+#include <iostream>
+#include <memory>
+
+#include "cli/Commands.h"
+#include "cli/Common.h"
+#include "cli/Diagnostics.h"
+#include "jobs/SpectralJob.h"
+#include "spectral/Parallel.h"
+
+namespace bandlight::cli
+{
+
+namespace
+{
+
+struct SpectralCommandOptions
+{
+    jobs::SpectralRequest request;
+    std::string from;
+    std::string to;
+    std::vector<std::string> channels;  ///< NAME=NM
+};
+
+void RunSpectral(SpectralCommandOptions& o)
+{
+    CommandReporter reporter;
+    jobs::SpectralOptions& s = o.request.options;
+    if (!o.from.empty())
+    {
+        s.from = jobs::ResolveIlluminant(o.from, reporter);
+    }
+    if (!o.to.empty())
+    {
+        s.to = jobs::ResolveIlluminant(o.to, reporter);
+    }
+    for (const std::string& c : o.channels)
+    {
+        const size_t eq = c.rfind('=');
+        char* end = nullptr;
+        const double nm = eq == std::string::npos ? 0.0 : std::strtod(c.c_str() + eq + 1, &end);
+        if (eq == std::string::npos || eq == 0 || !end || *end != '\0' || !(nm > 0.0))
+        {
+            throw Exception("--channel takes NAME=WAVELENGTH_NM, got '" + OneLine(c, 80) + "'");
+        }
+        s.channelWavelengths[c.substr(0, eq)] = nm;
+    }
+    const jobs::SpectralResult r = jobs::ConvertSpectralImages(o.request, reporter);
+    std::cout << "Read " << r.layout << "; " << r.applied << "\n";
+    if (r.run.sequence)
+    {
+        std::cout << "Wrote " << r.run.frames << " frames";
+        if (o.request.files.skipExisting || o.request.files.keepGoing)
+        {
+            std::cout << " (" << r.run.skipped << " skipped, " << r.run.failed.size() << " failed)";
+        }
+        std::cout << " in " << Fixed(r.run.seconds, 2) << " s\n";
+    }
+    if (!r.run.failed.empty())
+    {
+        throw Exception(std::to_string(r.run.failed.size()) + " of " +
+                        std::to_string(r.run.frames + r.run.skipped + r.run.failed.size()) +
+                        " frames failed; the first, frame " +
+                        std::to_string(r.run.failed[0].frame) + ": " + r.run.failed[0].error);
+    }
+}
+
+}  // namespace
+
+void AddSpectralCommand(CLI::App& app)
+{
+    auto o = std::make_shared<SpectralCommandOptions>();
+    jobs::SpectralRequest& r = o->request;
+    jobs::SpectralOptions& s = r.options;
+    CLI::App* cmd = app.add_subcommand(
+        "spectral",
+        "Integrate a spectral EXR (Fichet 2021, pbrt-v4 spectral film, named channels) to an "
+        "RGB EXR, or relight it exactly");
+    cmd->add_option("IN", r.files.input, "Spectral EXR, or a pattern such as shot.####.exr")
+        ->required();
+    cmd->add_option("OUT", r.files.output, "RGB EXR, or a pattern")->required();
+    cmd->add_option("--from", o->from,
+                    "Emissive images: the light the scene was lit by (with --to: relight)");
+    cmd->add_option("--to", o->to,
+                    "Emissive images: the light to relight to (scaled to --from's luminance); "
+                    "reflective images: the light to render under");
+    cmd->add_option("--working-space", s.workingSpace, "Linear RGB space of the output")
+        ->capture_default_str();
+    cmd->add_option("--plates", s.plates.plates,
+                    "balanced: white-balance the result from the light it shows to the working "
+                    "white; lit: do not")
+        ->check(CLI::IsMember({"lit", "balanced"}))
+        ->capture_default_str();
+    cmd->add_option("--adaptation", s.plates.adaptation, "Balance with cat02 or bradford")
+        ->check(CLI::IsMember({"cat02", "bradford"}))
+        ->capture_default_str();
+    AddObserverOption(*cmd, s.observer);
+    cmd->add_option("--channel", o->channels,
+                    "A channel named otherwise and its wavelength: NAME=NM (repeatable; Mitsuba "
+                    "3's specfilm)");
+    cmd->add_option("--channel-wavelengths", s.channelWavelengthsFile,
+                    "CSV of 'channel,wavelength_nm' rows, or of sensitivities (a wavelength "
+                    "column, one column per channel: each at its centroid)");
+    cmd->add_option("--kind", s.kind, "What named channels hold: emissive or reflective")
+        ->check(CLI::IsMember({"emissive", "reflective"}))
+        ->capture_default_str();
+    cmd->add_option("--sampling", s.sampling,
+                    "auto (as the layout says), points (values at the wavelengths) or buckets "
+                    "(means over each channel's interval)")
+        ->check(CLI::IsMember({"auto", "points", "buckets"}))
+        ->capture_default_str();
+    cmd->add_option("--frames", r.files.frames,
+                    "Frames for patterns: 1001-1100, 1001-1100x2, 1001-1010,1020");
+    cmd->add_flag("--skip-existing", r.files.skipExisting, "Skip frames whose output exists");
+    cmd->add_flag("--keep-going", r.files.keepGoing,
+                  "Go on after a frame fails; at the end name the failed frames and exit 2");
+    cmd->add_option("--threads", r.threads, "Threads (0: all cores; at most 256)")
+        ->check(CLI::Range(0, kMaxThreads))
+        ->capture_default_str();
+    cmd->callback([o] { RunSpectral(*o); });
+}
+
+}  // namespace bandlight::cli

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/SpectralJob.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "jobs/ImageApply.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/PixelKernels.h"
+#include "transforms/Plates.h"
+
+namespace bandlight::jobs
+{
+
+SpectralLayoutOptions SpectralOptions::layoutOptions() const
+{
+    SpectralLayoutOptions o;
+    o.namedWavelengths = channelWavelengths;
+    if (!channelWavelengthsFile.empty())
+    {
+        for (const auto& [name, nm] : ReadChannelWavelengths(channelWavelengthsFile))
+        {
+            o.namedWavelengths[name] = nm;
+        }
+    }
+    if (kind == "emissive")
+    {
+        o.namedKind = SpectralKind::EMISSIVE;
+    }
+    else if (kind == "reflective")
+    {
+        o.namedKind = SpectralKind::REFLECTIVE;
+    }
+    else
+    {
+        throw ParameterError("{kind} must be emissive or reflective, got '" + OneLine(kind, 40) +
+                             "'");
+    }
+    if (sampling == "points")
+    {
+        o.sampling = SpectralSampling::POINTS;
+    }
+    else if (sampling == "buckets")
+    {
+        o.sampling = SpectralSampling::BUCKETS;
+    }
+    else if (sampling != "auto")
+    {
+        throw ParameterError("{sampling} must be auto, points or buckets, got '" +
+                             OneLine(sampling, 40) + "'");
+    }
+    return o;
+}
+
+SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int channels,
+                                          const SpectralOptions& o)
+{
+    SpectralConversion c;
+    c.layout = layout;
+    const RgbSpace& working = FindRgbSpace(o.workingSpace);
+    c.workingSpace = working.name;
+    const Observer observer = ParseObserver(o.observer);
+    const bool reflective = layout.kind == SpectralKind::REFLECTIVE;
+    SpectralLighting lighting;
+    lighting.from = reflective ? Spectrum() : o.from.spectrum;
+    lighting.to = o.to.spectrum;
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> xyz =
+        SpectralXyzWeights(layout, observer, lighting, &c.notes);
+    Mat3 toRgb = RgbToXyzMatrix(working.chromaticities).inverse();
+    // The light the result shows: `to` when relit or rendered, else none.
+    const bool shown = reflective || !o.from.spectrum.empty();
+    const Plates plates = o.plates.parsed();
+    if (plates.convention == PlateConvention::BALANCED)
+    {
+        if (shown)
+        {
+            // The white the image shows, as this integration sees it (a
+            // white reflector; relit, at the source's luminance), onto the
+            // working white: white stays exactly (1, 1, 1) on any grid.
+            const std::vector<double> one =
+                reflective ? std::vector<double>(layout.wavelengths.size(), 1.0)
+                           : LightOnLayout(layout, o.from.spectrum);
+            const Vec3 white =
+                xyz * Eigen::Map<const Eigen::VectorXd>(one.data(), Eigen::Index(one.size()));
+            toRgb = toRgb * AdaptationMatrix(white / white.y(), WorkingWhiteXyz(working),
+                                             plates.adaptation);
+            c.balanced = true;
+        }
+        else
+        {
+            c.notes.push_back(
+                "the image is only integrated: no light is known to balance "
+                "(give {src=}S1 {dst=}S2 to relight); written as lit");
+        }
+    }
+    c.weights.setZero(3, channels);
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> rgb = toRgb * xyz;
+    for (size_t i = 0; i < layout.channels.size(); ++i)
+    {
+        c.weights.col(layout.channels[i]) = rgb.col(Eigen::Index(i));
+    }
+    c.applied = reflective ? "rendered under " + o.to.name
+                : shown    ? "relit " + o.from.name + " -> " + o.to.name
+                           : "integrated";
+    c.applied += c.balanced ? ", balanced (" + AdaptationName(plates.adaptation) + ")" : ", lit";
+    c.applied += ", " + working.name;
+    return c;
+}
+
+void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
+                         const std::vector<std::string>& channelNames, const float* pixels,
+                         size_t count, int channels)
+{
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float* v = pixels + p * size_t(channels);
+        for (const int c : layout.channels)
+        {
+            const float x = v[c];
+            if (std::isfinite(x) && x >= 0.0f)
+            {
+                continue;
+            }
+            const std::string what = std::isnan(x)   ? "NaN"
+                                     : std::isinf(x) ? "infinite"
+                                                     : "negative (" + std::to_string(x) + ")";
+            throw Exception(file + ": channel '" + OneLine(channelNames[size_t(c)], 80) + "' is " +
+                            what + " at pixel " + std::to_string(p) +
+                            (layout.kind == SpectralKind::EMISSIVE
+                                 ? "; radiance must be finite and not negative"
+                                 : "; a remittance must be finite and not negative"));
+        }
+    }
+}
+
+void IntegrateSpectralPixels(const SpectralConversion& conversion, const float* pixels,
+                             size_t count, int channels, float* rgb, int threads)
+{
+    // The dot products run over the channels from the first spectral one to
+    // the last (EXR sorts channels by name, so S0.* are consecutive).
+    const auto [lo, hi] =
+        std::minmax_element(conversion.layout.channels.begin(), conversion.layout.channels.end());
+    const size_t first = size_t(*lo), n = size_t(*hi) - first + 1;
+    std::vector<float> w(3 * n);
+    for (size_t c = 0; c < 3; ++c)
+    {
+        for (size_t j = 0; j < n; ++j)
+        {
+            w[c * n + j] = float(conversion.weights(Eigen::Index(c), Eigen::Index(first + j)));
+        }
+    }
+    ParallelFor(count, threads,
+                [&](size_t a, size_t b)
+                {
+                    SpectralDot(w.data(), n, pixels + a * size_t(channels) + first, b - a,
+                                size_t(channels), rgb + 3 * a, 3);
+                });
+}
+
+std::vector<float> SpectralImage::spectra() const
+{
+    const size_t n = layout.channels.size();
+    const size_t count = size_t(width) * size_t(height);
+    std::vector<float> s(count * n);
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (size_t i = 0; i < n; ++i)
+        {
+            s[p * n + i] = pixels[p * size_t(channels) + size_t(layout.channels[i])];
+        }
+    }
+    return s;
+}
+
+namespace
+{
+ImageData ReadImageData(const std::string& path, bool pixels)
+{
+    ImageData image;
+    const std::string error = ImageFiles().read(path, image, pixels);
+    if (!error.empty())
+    {
+        throw Exception(error);
+    }
+    return image;
+}
+}  // namespace
+
+SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& options)
+{
+    // The header first: a layout that does not parse costs no pixels.
+    const ImageData header = ReadImageData(path, false);
+    SpectralImage image;
+    image.layout =
+        FindSpectralLayout(path, header.channelNames, header.attributes, options.layoutOptions());
+    ImageData data = ReadImageData(path, true);
+    if (data.channelNames != header.channelNames)
+    {
+        throw Exception(path + ": changed while it was read");
+    }
+    image.width = data.width;
+    image.height = data.height;
+    image.channels = data.channels;
+    image.channelNames = std::move(data.channelNames);
+    image.pixels = std::move(data.pixels);
+    CheckSpectralPixels(image.layout, path, image.channelNames, image.pixels.data(),
+                        size_t(image.width) * size_t(image.height), image.channels);
+    return image;
+}
+
+SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporter)
+{
+    if (r.threads < 0 || r.threads > kMaxThreads)
+    {
+        throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
+                             ", got " + std::to_string(r.threads));
+    }
+    // Checked before any file is read.
+    const RgbSpace& working = FindRgbSpace(r.options.workingSpace);
+    (void)r.options.plates.parsed();
+    (void)ParseObserver(r.options.observer);
+    (void)r.options.layoutOptions();
+    SpectralResult result;
+    bool first = true;
+    const auto one = [&](const std::string& in, const std::string& out)
+    {
+        const SpectralImage image = ReadSpectralImage(in, r.options);
+        const SpectralConversion conversion =
+            MakeSpectralConversion(image.layout, image.channels, r.options);
+        if (first)
+        {
+            result.layout = image.layout.describe();
+            result.applied = conversion.applied;
+            for (const std::string& n : image.layout.notes)
+            {
+                reporter.note(in + ": " + n);
+            }
+            for (const std::string& n : conversion.notes)
+            {
+                reporter.note(n);
+            }
+            first = false;
+        }
+        const size_t count = size_t(image.width) * size_t(image.height);
+        // R, G, B and the image's alpha, if it has one.
+        const auto alpha = std::find(image.channelNames.begin(), image.channelNames.end(), "A");
+        const int outChannels = alpha == image.channelNames.end() ? 3 : 4;
+        std::vector<float> rgb(3 * count);
+        IntegrateSpectralPixels(conversion, image.pixels.data(), count, image.channels, rgb.data(),
+                                r.threads);
+        std::vector<float> pixels;
+        if (outChannels == 4)
+        {
+            pixels.resize(4 * count);
+            const size_t a = size_t(alpha - image.channelNames.begin());
+            for (size_t p = 0; p < count; ++p)
+            {
+                std::copy_n(&rgb[3 * p], 3, &pixels[4 * p]);
+                pixels[4 * p + 3] = image.pixels[p * size_t(image.channels) + a];
+            }
+        }
+        ImageDescription d = LinearImageDescription(working, ColorSpaceName(working));
+        d.attributes.push_back({"bandlight:transform",
+                                "spectral " + image.layout.describe() + ", " + conversion.applied});
+        WriteImage(out, outChannels == 4 ? pixels.data() : rgb.data(), image.width, image.height,
+                   outChannels,
+                   outChannels == 4 ? std::vector<std::string>{"R", "G", "B", "A"}
+                                    : std::vector<std::string>{"R", "G", "B"},
+                   d, PixelType::FLOAT);
+    };
+    result.run = RunFrameSet(r.files, reporter, one);
+    return result;
+}
+
+void WriteSpectralImage(const std::string& path, int width, int height, SpectralKind kind,
+                        const std::vector<double>& wavelengths, const std::vector<float>& spectra,
+                        const std::vector<float>& rgb, ImageDescription d, OutputSet* outputs)
+{
+    const size_t n = wavelengths.size();
+    const size_t count = size_t(width) * size_t(height);
+    const size_t channels = 3 + n;
+    std::vector<float> pixels(count * channels);
+    for (size_t p = 0; p < count; ++p)
+    {
+        std::copy_n(&rgb[3 * p], 3, &pixels[p * channels]);
+        std::copy_n(&spectra[p * n], n, &pixels[p * channels + 3]);
+    }
+    std::vector<std::string> names = {"R", "G", "B"};
+    for (const double nm : wavelengths)
+    {
+        names.push_back(SpectralChannelName(kind, nm));
+    }
+    d.attributes.push_back({"spectralLayoutVersion", "1.0"});
+    if (kind == SpectralKind::EMISSIVE)
+    {
+        d.attributes.push_back({"emissiveUnits", "W.m^-2.sr^-1"});
+    }
+    WriteImage(path, pixels.data(), width, height, int(channels), names, d, PixelType::FLOAT,
+               outputs);
+}
+
+}  // namespace bandlight::jobs
