@@ -41,6 +41,10 @@ inline constexpr int MIN_LUT_SIZE = 2;
 inline constexpr int MAX_LUT_SIZE = 129;
 /// The shaper of HDR LUT files.
 inline constexpr const char* LUT_SHAPER = "log2";
+/// What a `lut` file takes and returns: "linear" (the working space's linear
+/// values, through the shaper), or "acescct" / "acescc" (those encodings of
+/// them, as log-grading hosts hand them over; no shaper).
+inline constexpr const char* LUT_ENCODING = "linear";
 /// The format of a `lut` file.
 inline constexpr const char* LUT_FORMAT = "clf";
 
