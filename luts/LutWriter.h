@@ -38,7 +38,7 @@ const char* LutExtension(LutFormat format);
 struct LutOptions
 {
     LutFormat format = LutFormat::CLF;
-    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; defaults::LUT_SIZE)
+    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; `lut`: defaults::LUT_SIZE)
     bool forceLattice = false;  ///< bake a 3D LUT even where a matrix fits (CLF/CTF)
     ShaperSpec shaper;          ///< for LutEncoding::LINEAR only
     /// ACEScct or ACEScc: the 3D LUT takes and returns encoded values, no

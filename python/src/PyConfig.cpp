@@ -182,7 +182,8 @@ format: clf, ctf (the exact matrix for linear methods, unless size is
 given), cube, spi3d, 3dl (scene-linear HDR through the log2 shaper; the
 shaper is written beside as <stem>.shaper.clf: apply it before the LUT and
 its inverse after), resolve_cube, csp, houdini (display-referred [0, 1] data,
-shaper="none"). size: 3D LUT points per axis (default 33). encoding:
+shaper="none"). size: 3D LUT points per axis (default 65, which GPUs
+filtering the LUT texture linearly agree with; see docs/luts.md). encoding:
 "linear" (the working space's linear values, through the shaper), "acescct"
 or "acescc": the 3D LUT takes and returns ACEScct (S-2016-001) or ACEScc
 (S-2014-003) encoded values, encoded 0 to 1 = linear -0.0069 (ACEScc: 0.0012)
