@@ -26,7 +26,7 @@ namespace
 constexpr int kPixelsWide = 200;
 constexpr int kPixelsHigh = 100;
 
-/// 20,000 random saturated HDR pixels, RGBA: a hexcone hue at saturation
+/// The issue's pixel and 19,999 random saturated HDR pixels, RGBA: a hexcone hue at saturation
 /// 0.7 … 1 (one channel at most 30 % of the largest), brightness 1e-3 … 200
 /// log-uniform, alpha 1.
 std::vector<float> SaturatedHdrPixels()
@@ -35,8 +35,10 @@ std::vector<float> SaturatedHdrPixels()
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_real_distribution<double> saturation(0.7, 1.0);
     std::uniform_real_distribution<double> stops(std::log2(1e-3), std::log2(200.0));
-    std::vector<float> px;
-    for (int i = 0; i < kPixelsWide * kPixelsHigh; ++i)
+    // First the issue's example: upsample's 33³ look gave G = 21.1 on the
+    // CPU and 8.4 on the GPU.
+    std::vector<float> px = {109.8f, 34.9f, 180.4f, 1.0f};
+    for (int i = 1; i < kPixelsWide * kPixelsHigh; ++i)
     {
         const double h = 6.0 * unit(rng);
         const int sector = int(h) % 6;
@@ -220,6 +222,15 @@ TEST_CASE("3D LUT looks on the GPU as hosts upload them", "[gpu][lutprecision]")
                                    << a.worst);
                     // Both stages run the same code on the same textures.
                     CHECK(Differing(fragment, compute) == 0);
+                    if (look.name == "upsample A->D65" && size == 33 && !half)
+                    {
+                        std::cout << "[gpu] the issue's pixel (109.8, 34.9, 180.4), " << Describe(u)
+                                  << ": G " << std::setprecision(3) << cpu[1] << " on the CPU, "
+                                  << fragment[1] << " on the GPU\n";
+                        // Off by 12.7 with GL_LINEAR, as the issue saw.
+                        CHECK((std::fabs(fragment[1] - cpu[1]) > 10.0) ==
+                              (filter == LutUpload::Filter::LINEAR));
+                    }
                     const bool shaper = IsShaperLook(look);
                     if (half)
                     {
