@@ -20,14 +20,19 @@ struct LutRequest
     /// 3D LUT points per axis (default defaults::LUT_SIZE); for CLF/CTF,
     /// giving it bakes a 3D LUT instead of the exact matrix.
     std::optional<int> size;
-    std::string shaper = defaults::LUT_SHAPER;  ///< "log2" or "none"
+    std::string shaper = defaults::LUT_SHAPER;  ///< "log2" or "none" (linear encoding only)
+    /// "linear", "acescct" or "acescc": with a log encoding the 3D LUT takes
+    /// and returns that encoding of the working space's linear values (ACEScct
+    /// itself with the working space acescg) and `shaper` is not used.
+    std::string encoding = defaults::LUT_ENCODING;
 };
 
 struct LutResult
 {
     LutFiles files;
     int size = defaults::LUT_SIZE;
-    ShaperSpec shaper;  ///< the shaper the lattice was baked through
+    ShaperSpec shaper;  ///< the shaper the lattice was baked through (linear encoding)
+    std::string encodingDescription;  ///< what the LUT takes and returns, one sentence
 };
 
 /// Writes the LUT (and its companion shaper) of `request`, as one set.

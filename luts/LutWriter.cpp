@@ -134,12 +134,108 @@ void WriteSpi3d(const std::vector<float>& lattice, int size, const std::string& 
                   });
 }
 
+/// The exact transform sampled on a size³ lattice over [0, 1] of an
+/// encoding (linear → [0, 1], nullptr for none): nodes decoded through its
+/// inverse, the transform applied, and (`encodeOutput`) encoded again.
+std::vector<float> BakeOver(const PixelFunction& exact, const OCIO::TransformRcPtr& encoding,
+                            int size, bool encodeOutput)
+{
+    if (size < 2 || size > 129)
+    {
+        throw Exception("3D LUT size must be 2 to 129, got " + std::to_string(size));
+    }
+    const size_t n = size_t(size) * size_t(size) * size_t(size);
+    std::vector<float> rgb(3 * n);
+    for (size_t i = 0; i < n; ++i)
+    {
+        const size_t r = i % size_t(size);
+        const size_t g = (i / size_t(size)) % size_t(size);
+        const size_t b = i / (size_t(size) * size_t(size));
+        rgb[3 * i] = float(double(r) / double(size - 1));
+        rgb[3 * i + 1] = float(double(g) / double(size - 1));
+        rgb[3 * i + 2] = float(double(b) / double(size - 1));
+    }
+    if (encoding)
+    {
+        OCIO::TransformRcPtr decode = encoding->createEditableCopy();
+        decode->setDirection(OCIO::GetInverseTransformDirection(encoding->getDirection()));
+        Apply(decode, rgb);
+    }
+    exact(rgb.data(), n);
+    if (encoding && encodeOutput)
+    {
+        Apply(encoding, rgb);
+    }
+    return rgb;
+}
+
 std::string ShaperCompanionPath(const std::string& path)
 {
     const size_t slash = path.find_last_of('/');
     const size_t dot = path.find_last_of('.');
     const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
     return (hasExt ? path.substr(0, dot) : path) + ".shaper.clf";
+}
+
+/// The name of OCIO's Baker format for a format the Baker writes.
+const char* BakerFormat(LutFormat format)
+{
+    switch (format)
+    {
+        case LutFormat::CUBE:
+            return "iridas_cube";
+        case LutFormat::THREE_DL:
+            return "flame";
+        case LutFormat::RESOLVE_CUBE:
+            return "resolve_cube";
+        case LutFormat::CINESPACE:
+            return "cinespace";
+        case LutFormat::HOUDINI:
+            return "houdini";
+        default:
+            return "";
+    }
+}
+
+/// A log-encoded 3D LUT (ACEScct, ACEScc in and out) in any format: the
+/// lattice over the encoded [0, 1] needs no shaper, so the hosts' formats
+/// hold it through the Baker without a pre-LUT, and CLF/CTF as a lone Lut3D.
+void WriteEncodedLut(const PixelFunction& exact, const LutOptions& o, const std::string& path,
+                     OutputSet& set)
+{
+    // Bake into memory first, so a failure leaves no file behind.
+    const std::vector<float> lattice = BakeLattice(exact, o.encoding, o.size);
+    std::string description = o.description;
+    if (description.find("Input and output:") == std::string::npos)
+    {
+        description += (description.empty() ? "" : " ") +
+                       DescribeLutEncoding(o.encoding, "the working space's");
+    }
+    switch (o.format)
+    {
+        case LutFormat::CLF:
+        case LutFormat::CTF:
+        {
+            OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
+            lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+            lut->setFileOutputBitDepth(OCIO::BIT_DEPTH_F32);
+            SetLattice(*lut, lattice, o.size);
+            OCIO::GroupTransformRcPtr group = OCIO::GroupTransform::Create();
+            group->appendTransform(lut);
+            WriteGroup(group, o.format, path, description, set);
+            return;
+        }
+        case LutFormat::SPI3D:
+            WriteSpi3d(lattice, o.size, path, set);
+            return;
+        default:
+        {
+            LutOptions withDescription = o;
+            withDescription.description = description;
+            BakeThroughOcio(lattice, withDescription, BakerFormat(o.format), path, set);
+            return;
+        }
+    }
 }
 
 }  // namespace
@@ -223,38 +319,32 @@ PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact)
 std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& requested, int size,
                                bool encodeOutput)
 {
-    if (size < 2 || size > 129)
-    {
-        throw Exception("3D LUT size must be 2 to 129, got " + std::to_string(size));
-    }
     const ShaperSpec shaper = requested.alignedTo(size);
-    const size_t n = size_t(size) * size_t(size) * size_t(size);
-    std::vector<float> rgb(3 * n);
-    for (size_t i = 0; i < n; ++i)
-    {
-        const size_t r = i % size_t(size);
-        const size_t g = (i / size_t(size)) % size_t(size);
-        const size_t b = i / (size_t(size) * size_t(size));
-        rgb[3 * i] = float(double(r) / double(size - 1));
-        rgb[3 * i + 1] = float(double(g) / double(size - 1));
-        rgb[3 * i + 2] = float(double(b) / double(size - 1));
-    }
     // Nodes → linear through OCIO's own shaper, so the lattice matches the
     // shaper the LUT file is applied with, bit for bit.
-    if (OCIO::TransformRcPtr s = shaper.transform())
+    return BakeOver(exact, shaper.transform(), size, encodeOutput);
+}
+
+std::vector<float> BakeLattice(const PixelFunction& exact, LutEncoding encoding, int size)
+{
+    return BakeOver(exact, LutEncodingTransform(encoding), size, true);
+}
+
+std::string TransformDescription(const OCIO::ConstTransformRcPtr& transform)
+{
+    std::string description;
+    if (auto g = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform))
     {
-        s->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
-        Apply(s, rgb);
-    }
-    exact(rgb.data(), n);
-    if (encodeOutput)
-    {
-        if (OCIO::TransformRcPtr s = shaper.transform())
+        const OCIO::FormatMetadata& md = g->getFormatMetadata();
+        for (int i = 0; i < md.getNumChildrenElements(); ++i)
         {
-            Apply(s, rgb);
+            if (std::string(md.getChildElement(i).getElementName()) == OCIO::METADATA_DESCRIPTION)
+            {
+                description = md.getChildElement(i).getElementValue();
+            }
         }
     }
-    return rgb;
+    return description;
 }
 
 OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exact,
@@ -293,7 +383,8 @@ OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const Sha
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& o,
                   const std::string& path, OutputSet* outputs)
 {
-    if ((o.format == LutFormat::CLF || o.format == LutFormat::CTF) && isMatrix && !o.forceLattice)
+    if ((o.format == LutFormat::CLF || o.format == LutFormat::CTF) && isMatrix && !o.forceLattice &&
+        o.encoding == LutEncoding::LINEAR)
     {
         LutFiles files;
         files.lut = path;
@@ -305,18 +396,7 @@ LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const L
     LutOptions withDescription = o;
     if (withDescription.description.empty())
     {
-        if (auto g = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(exact))
-        {
-            const OCIO::FormatMetadata& md = g->getFormatMetadata();
-            for (int i = 0; i < md.getNumChildrenElements(); ++i)
-            {
-                if (std::string(md.getChildElement(i).getElementName()) ==
-                    OCIO::METADATA_DESCRIPTION)
-                {
-                    withDescription.description = md.getChildElement(i).getElementValue();
-                }
-            }
-        }
+        withDescription.description = TransformDescription(exact);
     }
     return WriteLut(PixelFunctionOf(exact), withDescription, path, outputs);
 }
@@ -332,6 +412,13 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     LutFiles files;
     files.lut = path;
     files.lattice = true;
+    if (o.encoding != LutEncoding::LINEAR)
+    {
+        WriteEncodedLut(exact, o, path, set);
+        own.commit();
+        files.encoding = o.encoding;
+        return files;
+    }
     if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
     {
         WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description, set);
@@ -354,13 +441,12 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
                 path + ": " + LutExtension(o.format) +
                 " files carry their shaper as a 1D pre-LUT that OpenColorIO 2.1 samples too "
                 "coarsely for scene-linear HDR; use {shaper=}none for display-referred [0, 1] "
-                "data, or {format=}cube (or spi3d, 3dl) with its companion shaper CLF");
+                "data, {encoding=}acescct (or acescc) for a LUT that takes and returns "
+                "log-encoded values, or {format=}cube (or spi3d, 3dl) with its companion shaper "
+                "CLF");
         }
-        BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o,
-                        o.format == LutFormat::RESOLVE_CUBE ? "resolve_cube"
-                        : o.format == LutFormat::CINESPACE  ? "cinespace"
-                                                            : "houdini",
-                        path, set);
+        BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o, BakerFormat(o.format), path,
+                        set);
         own.commit();
         return files;
     }
@@ -373,8 +459,7 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     }
     else
     {
-        BakeThroughOcio(lattice, o, o.format == LutFormat::CUBE ? "iridas_cube" : "flame", path,
-                        set);
+        BakeThroughOcio(lattice, o, BakerFormat(o.format), path, set);
     }
     if (OCIO::TransformRcPtr s = o.shaper.transform())
     {

@@ -7,6 +7,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "luts/LutEncoding.h"
 #include "luts/Shaper.h"
 #include "spectral/AtomicFile.h"
 
@@ -37,9 +38,12 @@ const char* LutExtension(LutFormat format);
 struct LutOptions
 {
     LutFormat format = LutFormat::CLF;
-    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; defaults::LUT_SIZE)
+    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; `lut`: defaults::LUT_SIZE)
     bool forceLattice = false;  ///< bake a 3D LUT even where a matrix fits (CLF/CTF)
-    ShaperSpec shaper;
+    ShaperSpec shaper;          ///< for LutEncoding::LINEAR only
+    /// ACEScct or ACEScc: the 3D LUT takes and returns encoded values, no
+    /// shaper, in every format (linear methods too: no matrix form).
+    LutEncoding encoding = LutEncoding::LINEAR;
     std::string description;  ///< written into formats that carry metadata
 };
 
@@ -50,6 +54,7 @@ struct LutFiles
     std::string shaper;  ///< companion shaper CLF for 3D-only formats ("" if none)
     bool lattice = false;
     bool outputEncoded = false;  ///< the 3D LUT's output is shaper-encoded: apply the inverse after
+    LutEncoding encoding = LutEncoding::LINEAR;  ///< of the LUT's input and output
 };
 
 /// A transform given as a function on interleaved linear RGB float triples
@@ -64,6 +69,14 @@ PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact);
 /// `encodeOutput` — red varying fastest, three floats per node.
 std::vector<float> BakeLattice(const PixelFunction& exact, const ShaperSpec& shaper, int size,
                                bool encodeOutput);
+
+/// The same over an encoding's [0, 1] (ACEScct, ACEScc): node (r, g, b)
+/// holds encode(exact(decode(node))), decoded and encoded through OCIO's own
+/// built-in transforms (LutEncodingTransform).
+std::vector<float> BakeLattice(const PixelFunction& exact, LutEncoding encoding, int size);
+
+/// The description a transform carries in its format metadata ("" if none).
+std::string TransformDescription(const OCIO::ConstTransformRcPtr& transform);
 
 /// Shaper, 3D LUT (tetrahedral, shaper-encoded in and out), inverse shaper,
 /// as one OCIO group: the lattice form of `exact` for scene-linear input.
@@ -81,6 +94,10 @@ OCIO::GroupTransformRcPtr LatticeTransform(const OCIO::ConstTransformRcPtr& exac
 /// too). spi3d is written here because OCIO 2.1 offers no spi3d writer; OCIO
 /// reads it back in the tests.
 ///
+/// With a log encoding (options.encoding) every format holds the 3D LUT
+/// over the encoded [0, 1], encoded in and out, with no shaper: CLF and CTF
+/// as a lone Lut3D, the hosts' formats through the Baker with no pre-LUT.
+///
 /// The LUT and its shaper are one set of outputs: with `outputs` they join
 /// that set (the caller commits it); without, they are replaced together
 /// when both are written, or neither is.
@@ -89,7 +106,8 @@ LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const L
 
 /// What WriteLut wrote, read back as one transform through OCIO's own file
 /// readers: the companion shaper (if any), the LUT (tetrahedral), and the
-/// inverse shaper when the LUT's output is shaper-encoded.
+/// inverse shaper when the LUT's output is shaper-encoded. A log-encoded LUT
+/// is read alone: it takes and returns encoded values.
 OCIO::GroupTransformRcPtr ReadLutFiles(const LutFiles& files);
 
 /// The same for a transform that exists only as a pixel function: always a

@@ -44,7 +44,7 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
                                                     const MethodSpec& method,
                                                     const RgbSpace& working,
                                                     Observer observer = Observer::CIE1931_2DEG,
-                                                    int lutSize = defaults::LUT_SIZE);
+                                                    int lutSize = defaults::TRANSFORM_LUT_SIZE);
 
 /// Working RGB → the band space of a three-band set (radiometric band
 /// values, VB/VG/VR for the lecture's bands). Throws Exception for other

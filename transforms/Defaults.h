@@ -34,13 +34,24 @@ inline constexpr const char* CONFIG_ILLUMINANTS = "A,C,D65,F2,F11";
 /// error near 0.05 ΔE00 where 33³ adds up to 0.25 (docs/accuracy.md); a 65³
 /// CLF file is about 12 MB.
 inline constexpr int CONFIG_LUT_SIZE = 65;
-/// 3D LUT size of a `lut` file.
-inline constexpr int LUT_SIZE = 33;
+/// 3D LUT size of a `lut` file: 65³, where OpenColorIO 2.1's GPU shader
+/// agrees with its CPU to 1e-5 of the pixel even when a host filters the LUT
+/// texture GL_LINEAR (OCIO's own apps and Blender do); a 33³ shaper LUT is
+/// off by up to 7 % there on saturated HDR pixels (docs/luts.md, "On the
+/// GPU"). A 65³ .cube is about 7 MB, a CLF about 12 MB.
+inline constexpr int LUT_SIZE = 65;
+/// 3D LUT size of the non-linear transforms made in process for the CPU
+/// (apply --method upsample, IlluminantChangeTransform's default).
+inline constexpr int TRANSFORM_LUT_SIZE = 33;
 /// The LUT sizes accepted anywhere: OCIO's Lut3D takes 2 to 129 points.
 inline constexpr int MIN_LUT_SIZE = 2;
 inline constexpr int MAX_LUT_SIZE = 129;
 /// The shaper of HDR LUT files.
 inline constexpr const char* LUT_SHAPER = "log2";
+/// What a `lut` file takes and returns: "linear" (the working space's linear
+/// values, through the shaper), or "acescct" / "acescc" (those encodings of
+/// them, as log-grading hosts hand them over; no shaper).
+inline constexpr const char* LUT_ENCODING = "linear";
 /// The format of a `lut` file.
 inline constexpr const char* LUT_FORMAT = "clf";
 

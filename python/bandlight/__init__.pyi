@@ -229,6 +229,8 @@ class LutResult(TypedDict):
     lattice: bool
     output_encoded: bool
     shaper_description: Optional[str]
+    encoding: str
+    encoding_description: str
 
 #: A row of the accuracy report ("from" is a keyword, hence this form).
 AccuracyRow = TypedDict("AccuracyRow", {
@@ -283,7 +285,7 @@ def config(out: Optional[StrPath] = None, *, working_space: Optional[str] = None
 def identify_scene_linear(config: Union[StrPath, OCIO.Config]) -> Tuple[str, str]: ...
 def lut(path: StrPath, src: LightLike, dst: LightLike, method: str = "bradford", *,
         format: str = "clf", size: Optional[int] = None, shaper: str = "log2",
-        working_space: str = "acescg", observer: ObserverLike = "1931",
+        encoding: str = "linear", working_space: str = "acescg", observer: ObserverLike = "1931",
         training: Optional[RemittancesLike] = None,
         plates: str = "balanced", adaptation: str = "cat02",
         camera: Optional[StrPath] = None, camera_idt: str = "D55") -> LutResult: ...

@@ -74,7 +74,7 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
 
 py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
              const std::string& method, const std::string& format, const std::optional<int>& size,
-             const std::string& shaper, const std::string& workingName,
+             const std::string& shaper, const std::string& encoding, const std::string& workingName,
              const py::object& observerArg, const py::object& training, const std::string& plates,
              const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
 {
@@ -83,6 +83,7 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
     r.format = format;
     r.size = size;
     r.shaper = shaper;
+    r.encoding = encoding;
     r.relight.plates = PlatesArgs{plates, adaptation, camera, cameraIdt}.options();
     r.relight.plates.parsed();
     r.relight.method = method;
@@ -109,8 +110,11 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
         result.files.shaper.empty() ? py::object(py::none()) : py::str(result.files.shaper);
     d["lattice"] = result.files.lattice;
     d["output_encoded"] = result.files.outputEncoded;
-    d["shaper_description"] = result.files.lattice ? py::object(py::str(result.shaper.describe()))
-                                                   : py::object(py::none());
+    d["shaper_description"] = result.files.lattice && result.files.encoding == LutEncoding::LINEAR
+                                  ? py::object(py::str(result.shaper.describe()))
+                                  : py::object(py::none());
+    d["encoding"] = LutEncodingName(result.files.encoding);
+    d["encoding_description"] = result.encodingDescription;
     return d;
 }
 }  // namespace
@@ -162,7 +166,7 @@ out or "absolute".
     m.def("lut", &Lut, py::arg("path"), py::arg("src"), py::arg("dst"),
           py::arg("method") = defaults::METHOD, py::kw_only(),
           py::arg("format") = defaults::LUT_FORMAT, py::arg("size") = py::none(),
-          py::arg("shaper") = defaults::LUT_SHAPER,
+          py::arg("shaper") = defaults::LUT_SHAPER, py::arg("encoding") = defaults::LUT_ENCODING,
           py::arg("working_space") = defaults::WORKING_SPACE,
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
@@ -171,13 +175,20 @@ out or "absolute".
 Writes the illuminant change from src to dst as a LUT file, as ``bandlight
 lut`` does, through OpenColorIO's own writers. Returns {"lut": path,
 "shaper": companion shaper file or None, "lattice": bool, "output_encoded":
-bool, "shaper_description": str or None}.
+bool, "shaper_description": str or None, "encoding": str,
+"encoding_description": str}.
 
 format: clf, ctf (the exact matrix for linear methods, unless size is
 given), cube, spi3d, 3dl (scene-linear HDR through the log2 shaper; the
 shaper is written beside as <stem>.shaper.clf: apply it before the LUT and
 its inverse after), resolve_cube, csp, houdini (display-referred [0, 1] data,
-shaper="none"). size: 3D LUT points per axis (default 33). The LUT and its
+shaper="none"). size: 3D LUT points per axis (default 65, which GPUs
+filtering the LUT texture linearly agree with; see docs/luts.md). encoding:
+"linear" (the working space's linear values, through the shaper), "acescct"
+or "acescc": the 3D LUT takes and returns ACEScct (S-2016-001) or ACEScc
+(S-2014-003) encoded values, encoded 0 to 1 = linear -0.0069 (ACEScc: 0.0012)
+to 222.9, with no shaper, in every format; the encoding is of the working
+space's linear values, as ACEScct encodes ACEScg (AP1). The LUT and its
 shaper are replaced together or not at all.
 )doc") + kPlatesDoc)
               .c_str());

@@ -3,10 +3,13 @@
 // and agreement with ArgyllCMS spec2cie.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -225,3 +228,99 @@ TEST_CASE("xyz agrees with ArgyllCMS spec2cie on the TCS under D65 and A", "[cli
     }
 }
 #endif
+
+namespace
+{
+/// The pixel `ociochecklut FILE r g b` prints.
+std::vector<double> CheckLut(const std::string& file, double r, double g, double b)
+{
+    std::ostringstream args;
+    args << std::setprecision(9) << "ociochecklut '" << file << "' " << r << " " << g << " " << b;
+    const Result out = Sh(args.str());
+    INFO(args.str() << "\n" << out.out << out.err);
+    REQUIRE(out.code == 0);
+    std::istringstream in(out.out);
+    std::vector<double> v(3);
+    in >> v[0] >> v[1] >> v[2];
+    REQUIRE_FALSE(in.fail());
+    return v;
+}
+
+/// ACEScct, Academy S-2016-001: the toe below 2^-7, log2 above.
+double Acescct(double x)
+{
+    return x <= 0.0078125 ? 10.5402377416545 * x + 0.0729055341958355
+                          : (std::log2(x) + 9.72) / 17.52;
+}
+double AcescctToLinear(double y)
+{
+    return y <= 0.155251141552511 ? (y - 0.0729055341958355) / 10.5402377416545
+                                  : std::exp2(y * 17.52 - 9.72);
+}
+}  // namespace
+
+TEST_CASE("lut --encoding acescct: one file for Resolve, cinespace and Houdini", "[cli]")
+{
+    // The exact transform: the linear method's CLF is its matrix.
+    const std::string exact = TempPath("encoding_exact.clf");
+    REQUIRE(Run("lut --from A --to D65 -o '" + exact + "'").code == 0);
+    for (const char* format : {"resolve_cube", "csp", "houdini"})
+    {
+        const std::string ext = std::string(format) == "resolve_cube" ? "cube" : format;
+        const std::string path = TempPath(std::string("encoding_") + format + "." +
+                                          (std::string(format) == "houdini" ? "lut" : ext));
+        const Result r = Run("lut --from A --to D65 --format " + std::string(format) +
+                             " --encoding acescct -o '" + path + "'");
+        INFO(format << ": " << r.out << r.err);
+        REQUIRE(r.code == 0);
+        CHECK_THAT(r.out, Contains("Input and output: ACEScct (Academy S-2016-001) of ACEScg"));
+        CHECK_FALSE(r.out.find(".shaper.clf") != std::string::npos);  // one file
+        // ACEScct in, ACEScct out: a grey and a colour against the matrix
+        // (ociochecklut interpolates trilinearly, hence a little slack).
+        for (const std::vector<double>& px :
+             {std::vector<double>{0.18, 0.18, 0.18}, std::vector<double>{8.0, 8.0, 8.0},
+              std::vector<double>{0.9, 0.3, 0.05}})
+        {
+            const std::vector<double> e = CheckLut(exact, px[0], px[1], px[2]);
+            const std::vector<double> l =
+                CheckLut(path, Acescct(px[0]), Acescct(px[1]), Acescct(px[2]));
+            const double scale = std::max({e[0], e[1], e[2]});
+            for (int c = 0; c < 3; ++c)
+            {
+                INFO(format << " pixel " << px[0] << " channel " << c);
+                CHECK(std::fabs(AcescctToLinear(l[c]) - e[c]) < 2e-2 * scale);
+            }
+        }
+    }
+    // Another working space: the note says what the curve encodes.
+    const Result rec709 =
+        Run("lut --from A --to D65 --format cube --encoding acescct "
+            "--working-space rec709 -o '" +
+            TempPath("encoding_709.cube") + "'");
+    CHECK(rec709.code == 0);
+    CHECK_THAT(rec709.err, Contains("curve encodes"));
+    CHECK_THAT(rec709.err, Contains("not ACEScct's ACEScg (AP1)"));
+    // --help states the encodings.
+    const Result help = Run("lut --help");
+    CHECK_THAT(help.out, Contains("--encoding"));
+    CHECK_THAT(help.out, Contains("S-2016-001"));
+    // Bad values: one line, exit 2, nothing written.
+    struct Bad
+    {
+        std::string args;
+        std::string message;
+    };
+    for (const Bad& b :
+         {Bad{"--encoding log", "unknown LUT --encoding 'log' (linear, acescct, acescc)"},
+          Bad{"--encoding acescc --shaper log2", "--shaper is for --encoding linear"}})
+    {
+        const std::string path = TempPath("encoding_bad.cube");
+        const Result r =
+            Run("lut --from A --to D65 --format cube " + b.args + " -o '" + path + "'");
+        INFO(b.args << ": " << r.err);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.err, Contains(b.message));
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        CHECK_FALSE(std::ifstream(path).good());
+    }
+}

@@ -293,8 +293,10 @@ GLuint CompileStage(GLenum stage, const std::string& text)
         char log[8192] = {};
         glGetShaderInfoLog(s, sizeof log, nullptr, log);
         glDeleteShader(s);
-        throw std::runtime_error(std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                                 " shader does not compile on the GPU: " + log);
+        const char* name = stage == GL_VERTEX_SHADER    ? "vertex"
+                           : stage == GL_COMPUTE_SHADER ? "compute"
+                                                        : "fragment";
+        throw std::runtime_error(std::string(name) + " shader does not compile on the GPU: " + log);
     }
     return s;
 }
@@ -351,7 +353,8 @@ void SetTextureParameters(GLenum target, GLint filter)
 
 /// Binds OCIO's LUTs to texture units 1, 2, ... and points their samplers
 /// at them. Returns the texture names (to delete after the draw).
-std::vector<GLuint> UploadLuts(const OCIO::GpuShaderDesc& desc, GLuint program, bool es)
+std::vector<GLuint> UploadLuts(const OCIO::GpuShaderDesc& desc, GLuint program, bool es,
+                               const LutUpload& upload)
 {
     std::vector<GLuint> textures;
     GLint unit = 1;
@@ -378,14 +381,16 @@ std::vector<GLuint> UploadLuts(const OCIO::GpuShaderDesc& desc, GLuint program, 
         textures.push_back(t);
         glActiveTexture(GL_TEXTURE0 + GLenum(unit));
         glBindTexture(GL_TEXTURE_3D, t);
-        // OCIO's tetrahedral code fetches the nodes itself: no filtering.
-        SetTextureParameters(GL_TEXTURE_3D, interpolation == OCIO::INTERP_NEAREST ||
-                                                    interpolation == OCIO::INTERP_TETRAHEDRAL
-                                                ? GL_NEAREST
-                                                : GL_LINEAR);
+        // OCIO's tetrahedral code fetches the nodes itself: no filtering
+        // (unless the host's filtering is what is being measured).
+        const bool nearest = interpolation == OCIO::INTERP_NEAREST ||
+                             upload.filter == LutUpload::Filter::NEAREST ||
+                             (upload.filter == LutUpload::Filter::NEAREST_FOR_TETRAHEDRAL &&
+                              interpolation == OCIO::INTERP_TETRAHEDRAL);
+        SetTextureParameters(GL_TEXTURE_3D, nearest ? GL_NEAREST : GL_LINEAR);
         // edge³ RGB nodes, red varying slowest (OCIO samples with .zyx).
-        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, GLsizei(edge), GLsizei(edge), GLsizei(edge), 0,
-                     GL_RGB, GL_FLOAT, values);
+        glTexImage3D(GL_TEXTURE_3D, 0, upload.halfFloat ? GL_RGB16F : GL_RGB32F, GLsizei(edge),
+                     GLsizei(edge), GLsizei(edge), 0, GL_RGB, GL_FLOAT, values);
         CheckGl("3D LUT upload");
         bindSampler(samplerName);
     }
@@ -546,7 +551,7 @@ std::string GpuRunner::Renderer(OCIO::GpuLanguage language)
 
 std::vector<float> GpuRunner::Run(const OCIO::ConstGPUProcessorRcPtr& processor,
                                   OCIO::GpuLanguage language, const std::vector<float>& rgba,
-                                  int width, int height)
+                                  int width, int height, const LutUpload& upload)
 {
     if (width <= 0 || height <= 0 || rgba.size() != size_t(width) * size_t(height) * 4)
     {
@@ -575,7 +580,7 @@ std::vector<float> GpuRunner::Run(const OCIO::ConstGPUProcessorRcPtr& processor,
     {
         glUniform2f(size, GLfloat(width), GLfloat(height));
     }
-    const std::vector<GLuint> luts = UploadLuts(*shader.desc, program, IsEs(language));
+    const std::vector<GLuint> luts = UploadLuts(*shader.desc, program, IsEs(language), upload);
     SetUniforms(*shader.desc, program);
 
     // An RGBA32F render target of the image's size.
@@ -603,6 +608,86 @@ std::vector<float> GpuRunner::Run(const OCIO::ConstGPUProcessorRcPtr& processor,
     std::vector<float> out(rgba.size());
     glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out.data());
     CheckGl("glReadPixels");
+    glDeleteTextures(GLsizei(luts.size()), luts.data());
+    return out;
+}
+
+std::string Describe(const LutUpload& upload)
+{
+    const char* filter = upload.filter == LutUpload::Filter::LINEAR    ? "GL_LINEAR"
+                         : upload.filter == LutUpload::Filter::NEAREST ? "GL_NEAREST"
+                                                                       : "nearest for tetrahedral";
+    return std::string(filter) + ", " + (upload.halfFloat ? "RGB16F" : "RGB32F");
+}
+
+std::vector<float> GpuRunner::RunCompute(const OCIO::ConstGPUProcessorRcPtr& processor,
+                                         const std::vector<float>& rgba, const LutUpload& upload)
+{
+    if (rgba.empty() || rgba.size() % 4 != 0)
+    {
+        throw std::invalid_argument("GpuRunner::RunCompute: rgba must hold RGBA pixels");
+    }
+    std::string why;
+    Context* c = ContextFor(OCIO::GPU_LANGUAGE_GLSL_4_0, &why);
+    if (!c)
+    {
+        throw std::runtime_error("no desktop OpenGL context for compute shaders: " + why);
+    }
+    const GpuShader shader = Extract(processor, OCIO::GPU_LANGUAGE_GLSL_4_0);
+    const std::string text = "#version 430 core\n" + shader.ocioText +
+                             "\nlayout(local_size_x = 64) in;\n"
+                             "layout(std430, binding = 0) buffer Pixels { vec4 px[]; };\n"
+                             "uniform uint count;\n"
+                             "void main()\n"
+                             "{\n"
+                             "    uint i = gl_GlobalInvocationID.x;\n"
+                             "    if (i < count)\n"
+                             "    {\n"
+                             "        px[i] = OCIOMain(px[i]);\n"
+                             "    }\n"
+                             "}\n";
+    GLuint program = 0;
+    const auto found = c->programs.find(text);
+    if (found != c->programs.end())
+    {
+        program = found->second;
+    }
+    else
+    {
+        const GLuint cs = CompileStage(GL_COMPUTE_SHADER, text);
+        program = glCreateProgram();
+        glAttachShader(program, cs);
+        glLinkProgram(program);
+        glDeleteShader(cs);
+        GLint ok = 0;
+        glGetProgramiv(program, GL_LINK_STATUS, &ok);
+        if (!ok)
+        {
+            char log[8192] = {};
+            glGetProgramInfoLog(program, sizeof log, nullptr, log);
+            glDeleteProgram(program);
+            throw std::runtime_error(std::string("compute program does not link: ") + log);
+        }
+        c->programs.emplace(text, program);
+    }
+    glUseProgram(program);
+    const std::vector<GLuint> luts = UploadLuts(*shader.desc, program, false, upload);
+    SetUniforms(*shader.desc, program);
+    const GLuint count = GLuint(rgba.size() / 4);
+    glUniform1ui(glGetUniformLocation(program, "count"), count);
+    GLuint buffer = 0;
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(rgba.size() * sizeof(float)), rgba.data(),
+                 GL_DYNAMIC_COPY);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+    glDispatchCompute((count + 63) / 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> out(rgba.size());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(out.size() * sizeof(float)),
+                       out.data());
+    CheckGl("compute dispatch");
+    glDeleteBuffers(1, &buffer);
     glDeleteTextures(GLsizei(luts.size()), luts.data());
     return out;
 }

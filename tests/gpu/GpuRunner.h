@@ -34,6 +34,25 @@ struct GpuShader
     std::string fragmentText;       ///< header + OCIO's text + main()
 };
 
+/// How a host uploads OCIO's 3D LUT textures. OCIO 2.1's tetrahedral code
+/// fetches the lattice nodes itself, at texel centres, so NEAREST is what it
+/// needs; OCIO's own apps (oglapphelpers) and Blender set GL_LINEAR on every
+/// 3D LUT that is not INTERP_NEAREST, and Blender uploads them as RGB16F.
+struct LutUpload
+{
+    enum class Filter
+    {
+        NEAREST_FOR_TETRAHEDRAL,  ///< NEAREST for tetrahedral and nearest LUTs, else LINEAR
+        LINEAR,                   ///< GL_LINEAR on every 3D LUT except INTERP_NEAREST ones
+        NEAREST,                  ///< GL_NEAREST on every 3D LUT
+    };
+    Filter filter = Filter::NEAREST_FOR_TETRAHEDRAL;
+    bool halfFloat = false;  ///< 3D LUTs as RGB16F (the driver rounds), else RGB32F
+};
+
+/// "nearest for tetrahedral, float", "GL_LINEAR, half", ...
+std::string Describe(const LutUpload& upload);
+
 /// Headless GPU rendering of OCIO processors, one EGL display and context
 /// per API (desktop OpenGL, OpenGL ES) created on first use and kept for the
 /// life of the process, and shader validation. Everything is static: there
@@ -64,7 +83,14 @@ public:
     /// with the GL or compiler message when anything fails.
     static std::vector<float> Run(const OCIO::ConstGPUProcessorRcPtr& processor,
                                   OCIO::GpuLanguage language, const std::vector<float>& rgba,
-                                  int width, int height);
+                                  int width, int height, const LutUpload& upload = {});
+
+    /// The same through a compute shader (GLSL 4.30 around OCIO's GLSL 4.0
+    /// function, one invocation per pixel, the pixels in a shader storage
+    /// buffer): no rasteriser, no framebuffer, no input texture.
+    static std::vector<float> RunCompute(const OCIO::ConstGPUProcessorRcPtr& processor,
+                                         const std::vector<float>& rgba,
+                                         const LutUpload& upload = {});
 
     /// The renderer's name and version ("llvmpipe (LLVM 15.0.6, 256 bits) |
     /// OpenGL 4.5 ..."), "" if there is no context for `language`.

@@ -138,7 +138,45 @@ def test_luts_equal_the_commands(tmp_path, method, fmt, size):
         assert result["shaper"] is None
 
 
+@pytest.mark.parametrize("method, fmt, encoding", [
+    ("bradford", "resolve_cube", "acescct"),  # one file, no shaper, for Resolve
+    ("band3", "houdini", "acescc"),
+    ("rootpoly", "clf", "acescct"),             # non-linear: the lattice alone
+])
+def test_log_encoded_luts_equal_the_commands(tmp_path, method, fmt, encoding):
+    ext = {"resolve_cube": "cube", "houdini": "lut"}.get(fmt, fmt)
+    py_path, cli_path = tmp_path / f"py.{ext}", tmp_path / f"cli.{ext}"
+    result = bandlight.lut(py_path, "A", "D65", method, format=fmt, size=9, encoding=encoding)
+    run_cli("lut", "--from", "A", "--to", "D65", "--method", method, "--format", fmt,
+            "--size", 9, "--encoding", encoding, "-o", cli_path)
+    assert py_path.read_bytes() == cli_path.read_bytes()
+    assert result["encoding"] == encoding
+    assert result["shaper"] is None and result["shaper_description"] is None
+    assert result["lattice"]
+    title = {"acescct": "ACEScct", "acescc": "ACEScc"}[encoding]
+    assert result["encoding_description"].startswith(f"Input and output: {title} (Academy S-")
+    # The grey 0.18 comes back as the exact transform's grey, in the encoding.
+    exact = bandlight.lut(tmp_path / "exact.clf", "A", "D65", method, size=33 if
+                          method == "rootpoly" else None)
+    assert exact["encoding"] == "linear"
+    cpu = OCIO.Config.CreateRaw().getProcessor(
+        OCIO.FileTransform(str(py_path), interpolation=OCIO.INTERP_TETRAHEDRAL)).getDefaultCPUProcessor()
+    exact_cpu = OCIO.Config.CreateRaw().getProcessor(
+        OCIO.FileTransform(str(tmp_path / "exact.clf"))).getDefaultCPUProcessor()
+    # Academy S-2016-001 / S-2014-003 above their toes: (log2 x + 9.72) / 17.52.
+    grey = (np.log2(0.18) + 9.72) / 17.52
+    encoded = np.array(cpu.applyRGB([grey] * 3))
+    linear = np.exp2(encoded * 17.52 - 9.72)
+    np.testing.assert_allclose(linear, exact_cpu.applyRGB([0.18] * 3), rtol=2e-3)
+
+
 def test_lut_errors_are_the_commands(tmp_path):
+    with pytest.raises(ValueError) as e:
+        bandlight.lut(tmp_path / "x.cube", "A", "D65", format="cube", encoding="log")
+    assert str(e.value) == "unknown LUT encoding 'log' (linear, acescct, acescc)"
+    assert cli_error("lut", "--from", "A", "--to", "D65", "--format", "cube", "--encoding", "log",
+                     "-o", tmp_path / "x.cube") == (
+        "unknown LUT --encoding 'log' (linear, acescct, acescc)")
     with pytest.raises(ValueError) as e:
         bandlight.lut(tmp_path / "x.png", "A", "D65", format="png")
     assert str(e.value) == cli_error("lut", "--from", "A", "--to", "D65", "--format", "png",
@@ -150,7 +188,9 @@ def test_lut_errors_are_the_commands(tmp_path):
     command = cli_error("lut", "--from", "A", "--to", "D65", "--format", "csp",
                         "--size", "9", "-o", tmp_path / "x.csp")
     assert "use --shaper none" in command and "or --format cube" in command
-    assert str(e.value) == command.replace("--shaper ", "shaper=").replace("--format ", "format=")
+    assert "--encoding acescct" in command
+    assert str(e.value) == (command.replace("--shaper ", "shaper=").replace("--format ", "format=")
+                            .replace("--encoding ", "encoding="))
     missing = tmp_path / "no" / "such" / "dir" / "x.clf"
     with pytest.raises(FileNotFoundError) as e:
         bandlight.lut(missing, "A", "D65")
