@@ -77,7 +77,10 @@ void AddApplyCommand(CLI::App& app)
     cmd->add_option("--look", r.look, "Look to apply, from --config");
     cmd->add_option("--config", r.config, "Config directory (or .ocio file) holding the look");
     cmd->add_option("--colorspace", r.colorspace,
-                    "Colour space of the image in the config (default: its scene_linear role)");
+                    "With --look: the image's colour space in the config (default: scene_linear, "
+                    "the image converted to it from what the file says). Without: what the file "
+                    "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
+                    "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
     cmd->add_option("--frames", r.frames,
                     "Frames for patterns, as farms hand them out: 1001-1100, 1001-1100x2, "

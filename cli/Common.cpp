@@ -8,7 +8,7 @@ namespace bandlight::cli
 
 void CommandReporter::note(const std::string& line)
 {
-    Note(line);
+    Note(SpellParameters(line, Face::COMMAND));
 }
 
 void CommandReporter::progress(const std::string& line, double)

@@ -3,10 +3,12 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 
 #include "jobs/Frames.h"
 #include "jobs/ImageApply.h"
 #include "plugin/OcioTransforms.h"
+#include "plugin/SceneLinearEvidence.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 
@@ -26,6 +28,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     // LUT between the fit and the pixels.
     std::function<void(float*, size_t)> native;
     std::optional<ClampMatrixKernel> kernel;
+    ImageColourRequest colour;
     if (!r.look.empty())
     {
         if (r.config.empty())
@@ -49,6 +52,23 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         t->setLooks(r.look.c_str());
         processor = config->getProcessor(t);
         result.applied = "look " + r.look;
+        // The image's pixels in the look's space: as they are when the user
+        // named the space; else converted from what the file says to
+        // scene_linear, whose primaries the config shows.
+        if (r.colorspace.empty())
+        {
+            try
+            {
+                colour.working = IdentifySceneLinear(config).space;
+            }
+            catch (const Exception& e)
+            {
+                reporter.note("the primaries of " + r.config +
+                              "'s scene_linear are unknown, so the image goes to the look as it "
+                              "is; name its colour space in the config with {colorspace} (" +
+                              std::string(e.what()) + ")");
+            }
+        }
         // A look whose optimised processor is a clamp and a matrix (any
         // config's, read back from OCIO) runs on the native kernel.
         if (const std::optional<ClampMatrixKernel> k = NativeClampMatrix(processor))
@@ -64,6 +84,11 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
                 "give {look=}NAME {config=}DIR, or {src=}S1 {dst=}S2 [{method=}M]");
         }
         const RelightRequest& relight = *r.relight;
+        colour.working = &relight.working();
+        if (!r.colorspace.empty())
+        {
+            colour.declared = NamedEncoding(r.colorspace);
+        }
         const MethodSpec method = relight.methodSpec(reporter);
         const Observer observer = ParseObserver(relight.observer);
         if (method.method == ChangeMethod::ROOTPOLY ||
@@ -85,21 +110,30 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             kernel = NativeClampMatrix(processor);
         }
     }
+    const BufferWork work = kernel   ? KernelWork(*kernel, r.threads)
+                            : native ? RgbWork(native, r.threads)
+                                     : ProcessorWork(processor->getOptimizedCPUProcessor(
+                                                         OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                         OCIO::OPTIMIZATION_DEFAULT),
+                                                     r.threads);
+    // Each note once for a sequence: the frame's name as the pattern.
+    std::set<std::string> noted;
     const auto applyOne = [&](const std::string& in, const std::string& out)
     {
-        if (kernel)
+        for (std::string n : ApplyToImage(work, in, out, result.applied, colour))
         {
-            ApplyToImage(*kernel, in, out, r.threads, result.applied);
-        }
-        else if (native)
-        {
-            ApplyToImage(native, in, out, r.threads, result.applied);
-        }
-        else
-        {
-            ApplyToImage(processor->getOptimizedCPUProcessor(
-                             OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT),
-                         in, out, r.threads, result.applied);
+            for (const auto& [name, pattern] : {std::pair{in, r.input}, std::pair{out, r.output}})
+            {
+                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
+                     at = n.find(name, at + pattern.size()))
+                {
+                    n.replace(at, name.size(), pattern);
+                }
+            }
+            if (noted.insert(n).second)
+            {
+                reporter.note(n);
+            }
         }
     };
 

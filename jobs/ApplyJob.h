@@ -19,9 +19,13 @@ struct ApplyRequest
     std::string output;  ///< an image, or a pattern
     std::string frames;  ///< with patterns: the frames, "1001-1100"
     /// A look of a config (folder or .ocio file), applied in `colorspace`
-    /// (empty: the config's scene_linear role).
+    /// (empty: the config's scene_linear role, the image converted to it from
+    /// what the file says when the config shows scene_linear's primaries).
     std::string look;
     std::string config;
+    /// With a look: the image's colour space in the config, taken as given.
+    /// Without: what the file holds, instead of what its tags say: a
+    /// built-in RGB space (linear) or "srgb" (docs/images.md).
     std::string colorspace;
     /// Without a look: the illuminant change (rootpoly applies natively,
     /// the other methods through their OCIO transform).

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <thread>
 
+#include "plugin/ConfigBuilder.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
@@ -47,18 +49,10 @@ void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long 
     ParallelFor(size_t(std::max(height, 0L)), threads, run);
 }
 
-void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
-                  const std::string& out, int threads, const std::string& note)
+BufferWork ProcessorWork(const OCIO::ConstCPUProcessorRcPtr& cpu, int threads)
 {
-    const std::string error = ImageFiles().transform(
-        in, out,
-        [&](float* pixels, long width, long height, int channels, const int* rgb)
-        { ApplyToBuffer(cpu, pixels, width, height, channels, rgb, threads); },
-        note);
-    if (!error.empty())
-    {
-        throw Exception(error);
-    }
+    return [cpu, threads](float* pixels, long width, long height, int channels, const int* rgb)
+    { ApplyToBuffer(cpu, pixels, width, height, channels, rgb, threads); };
 }
 
 namespace
@@ -95,50 +89,130 @@ void ApplyRgbRows(const std::function<void(float* rgb, size_t count)>& rgbFuncti
                     }
                 });
 }
+
 }  // namespace
 
-void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
-                  const std::string& in, const std::string& out, int threads,
-                  const std::string& note)
+BufferWork RgbWork(const std::function<void(float* rgb, size_t count)>& rgbFunction, int threads)
 {
-    const std::string error = ImageFiles().transform(
-        in, out,
-        [&](float* pixels, long width, long height, int channels, const int* rgb)
-        { ApplyRgbRows(rgbFunction, pixels, width, height, channels, rgb, threads); },
-        note);
-    if (!error.empty())
-    {
-        throw Exception(error);
-    }
+    return
+        [rgbFunction, threads](float* pixels, long width, long height, int channels, const int* rgb)
+    { ApplyRgbRows(rgbFunction, pixels, width, height, channels, rgb, threads); };
 }
 
-void ApplyToImage(const ClampMatrixKernel& kernel, const std::string& in, const std::string& out,
-                  int threads, const std::string& note)
+BufferWork KernelWork(const ClampMatrixKernel& kernel, int threads)
 {
+    return [kernel, threads](float* pixels, long width, long height, int channels, const int* rgb)
+    {
+        if (rgb[0] == 0 && rgb[1] == 1 && rgb[2] == 2 && channels >= 3)
+        {
+            const size_t rowFloats = size_t(width) * size_t(channels);
+            ParallelFor(size_t(std::max(height, 0L)), threads,
+                        [&](size_t y0, size_t y1) {
+                            ClampMatrix(kernel, pixels + y0 * rowFloats, (y1 - y0) * size_t(width),
+                                        size_t(channels));
+                        });
+            return;
+        }
+        // Channels in another order: gathered as RGB rows, as for any
+        // per-pixel function.
+        ApplyRgbRows([&](float* p, size_t n) { ClampMatrix(kernel, p, n, 3); }, pixels, width,
+                     height, channels, rgb, threads);
+    };
+}
+
+std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
+                                      const std::string& out, const std::string& note,
+                                      const ImageColourRequest& colour)
+{
+    std::vector<std::string> notes;
+    // What the work throws comes back as it was (a ParameterError spells
+    // its parameters per face), not as the module's text.
+    std::exception_ptr thrown;
+    const auto process = [&](float* pixels, long width, long height, int channels, const int* rgb,
+                             const ImageData& header)
+    {
+        if (!colour.working)
+        {
+            work(pixels, width, height, channels, rgb);
+            return;
+        }
+        const ImageEncoding encoding =
+            colour.declared ? *colour.declared : IdentifyImageEncoding(header, in, *colour.working);
+        const bool display = IsDisplayReferred(header);
+        if (!display && IsDisplayReferredFile(out))
+        {
+            throw Exception(out +
+                            ": a display-referred format (8- or 16-bit code values) "
+                            "cannot hold the scene-linear " +
+                            encoding.describe() + " of " + in +
+                            ": write an EXR (or convert it afterwards, e.g. oiiotool "
+                            "--colorconvert)");
+        }
+        const std::string working = SpaceLabel(*colour.working);
+        if (encoding.assumed)
+        {
+            notes.push_back(in + " names no colour space: taken as linear " + working +
+                            " (say otherwise with {colorspace})");
+        }
+        const OCIO::ConstCPUProcessorRcPtr in2work = EncodingToLinear(encoding, *colour.working);
+        const OCIO::ConstCPUProcessorRcPtr work2out = LinearToEncoding(*colour.working, encoding);
+        if (in2work)
+        {
+            notes.push_back(in + ": " + encoding.describe() + " (" + encoding.evidence +
+                            "), converted to linear " + working + " for the work and back");
+            ApplyToBuffer(in2work, pixels, width, height, channels, rgb, 0);
+        }
+        work(pixels, width, height, channels, rgb);
+        if (work2out)
+        {
+            ApplyToBuffer(work2out, pixels, width, height, channels, rgb, 0);
+        }
+        if (display)
+        {
+            size_t clipped = 0;
+            const size_t count = size_t(width) * size_t(height);
+            for (size_t p = 0; p < count; ++p)
+            {
+                const float* v = pixels + p * size_t(channels);
+                clipped += (v[rgb[0]] > 1.0f || v[rgb[1]] > 1.0f || v[rgb[2]] > 1.0f ||
+                            v[rgb[0]] < 0.0f || v[rgb[1]] < 0.0f || v[rgb[2]] < 0.0f)
+                               ? 1
+                               : 0;
+            }
+            if (clipped > 0)
+            {
+                notes.push_back(out + ": " + std::to_string(clipped) + " of " +
+                                std::to_string(count) +
+                                " pixels left 0-1 and are clipped: the format holds "
+                                "display-referred code values (write an EXR to keep them)");
+            }
+        }
+    };
     const std::string error = ImageFiles().transform(
         in, out,
-        [&](float* pixels, long width, long height, int channels, const int* rgb)
+        [&](float* pixels, long width, long height, int channels, const int* rgb,
+            const ImageData& header)
         {
-            if (rgb[0] == 0 && rgb[1] == 1 && rgb[2] == 2 && channels >= 3)
+            try
             {
-                const size_t rowFloats = size_t(width) * size_t(channels);
-                ParallelFor(size_t(std::max(height, 0L)), threads,
-                            [&](size_t y0, size_t y1) {
-                                ClampMatrix(kernel, pixels + y0 * rowFloats,
-                                            (y1 - y0) * size_t(width), size_t(channels));
-                            });
-                return;
+                process(pixels, width, height, channels, rgb, header);
             }
-            // Channels in another order: gathered as RGB rows, as for any
-            // per-pixel function.
-            ApplyRgbRows([&](float* rgb, size_t n) { ClampMatrix(kernel, rgb, n, 3); }, pixels,
-                         width, height, channels, rgb, threads);
+            catch (...)
+            {
+                thrown = std::current_exception();
+                throw;
+            }
         },
         note);
+    if (thrown)
+    {
+        std::rethrow_exception(thrown);
+    }
     if (!error.empty())
     {
         throw Exception(error);
     }
+    return notes;
 }
 
 std::optional<ClampMatrixKernel> NativeClampMatrix(const OCIO::ConstProcessorRcPtr& processor)

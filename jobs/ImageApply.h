@@ -8,6 +8,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "jobs/ImageColour.h"
 #include "jobs/ImageFiles.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/RgbSpaces.h"
@@ -17,28 +18,46 @@ namespace bandlight::jobs
 {
 namespace OCIO = OCIO_NAMESPACE;
 
-/// Applies an OCIO processor to an image file and writes the result:
-/// through OpenImageIO, any format it reads; the output keeps the input's
-/// pixel type, channel names, alpha and metadata, and appears only when it
-/// is complete (written to a temporary file, then renamed). Only the R, G,
-/// B channels change; alpha and any other channel pass through. The pixels
-/// are processed on `threads` threads (0: all cores). Throws Exception
-/// naming the file on any read or write failure.
-void ApplyToImage(const OCIO::ConstCPUProcessorRcPtr& cpu, const std::string& in,
-                  const std::string& out, int threads, const std::string& note);
+/// The work on an image's pixels, in the space the job works in: (pixels,
+/// width, height, channels per pixel, indices of R, G, B), in place.
+using BufferWork = std::function<void(float*, long, long, int, const int*)>;
 
-/// The same with any per-pixel function on interleaved RGB triples
-/// (bandlight's native rootpoly): the R, G, B channels are gathered, passed
-/// to `rgbFunction` in blocks of rows on `threads` threads, and scattered
-/// back; alpha and other channels pass through.
-void ApplyToImage(const std::function<void(float* rgb, size_t count)>& rgbFunction,
-                  const std::string& in, const std::string& out, int threads,
-                  const std::string& note);
+/// An OCIO processor, on `threads` threads (0: all cores).
+BufferWork ProcessorWork(const OCIO::ConstCPUProcessorRcPtr& cpu, int threads);
 
-/// The same with a clamp-and-matrix kernel, natively (the SIMD kernel of
-/// this CPU on the file's own pixel stride when R, G, B lead each pixel).
-void ApplyToImage(const ClampMatrixKernel& kernel, const std::string& in, const std::string& out,
-                  int threads, const std::string& note);
+/// Any per-pixel function on interleaved RGB triples (bandlight's native
+/// rootpoly): R, G, B gathered, passed in blocks of rows, scattered back.
+BufferWork RgbWork(const std::function<void(float* rgb, size_t count)>& rgbFunction, int threads);
+
+/// A clamp-and-matrix kernel, natively (the SIMD kernel of this CPU on the
+/// file's own pixel stride when R, G, B lead each pixel).
+BufferWork KernelWork(const ClampMatrixKernel& kernel, int threads);
+
+/// What an image's pixels are to the work.
+struct ImageColourRequest
+{
+    /// The linear space the work runs in: the file's pixels are decoded
+    /// and converted into it, and back after the work. nullptr: the pixels
+    /// go to the work as they are (a config's colour space the user named).
+    const RgbSpace* working = nullptr;
+    /// The file's encoding as the user gives it ({colorspace}); nullopt:
+    /// as the file says (IdentifyImageEncoding).
+    std::optional<ImageEncoding> declared;
+};
+
+/// Applies `work` to an image file and writes the result: through
+/// OpenImageIO, any format it reads; the output keeps the input's pixel
+/// type, channel names, alpha and metadata, and appears only when it is
+/// complete (written to a temporary file, then renamed). Only R, G, B
+/// change; alpha and other channels pass through. sRGB-encoded images and
+/// images of other primaries are converted to `colour.working` for the
+/// work and back; what was assumed, and values clipped by a display-referred
+/// format, are returned as notes. Throws Exception naming the file on any
+/// read or write failure, and for a scene-linear image written to a
+/// display-referred format.
+std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
+                                      const std::string& out, const std::string& note,
+                                      const ImageColourRequest& colour);
 
 /// The clamp and affine 3×3 an optimised OCIO processor consists of, when
 /// it is nothing else: a RangeTransform that only clamps (both bounds

@@ -49,8 +49,10 @@ struct ImageData
 };
 
 /// Processes interleaved float pixels in place: (pixels, width, height,
-/// channels, indices of R, G, B).
-using PixelProcess = std::function<void(float*, long, long, int, const int*)>;
+/// channels, indices of R, G, B, the file's header without pixels). An
+/// exception it throws becomes the call's error.
+using PixelProcess =
+    std::function<void(float*, long, long, int, const int*, const ImageData& header)>;
 
 /// The module's entry points. Each returns "" on success or the error
 /// message (which names the file).
@@ -70,7 +72,7 @@ struct ImageFilesApi
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 4;
+constexpr int kImageFilesApiVersion = 5;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

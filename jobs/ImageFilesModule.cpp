@@ -87,6 +87,28 @@ void CheckImageSize(const std::string& file, const OIIO::ImageSpec& spec)
     }
 }
 
+/// The header of an open image as ImageData (no pixels).
+ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
+{
+    ImageData image;
+    image.width = spec.width;
+    image.height = spec.height * std::max(1, spec.depth);
+    image.channels = spec.nchannels;
+    image.channelNames = spec.channelnames;
+    for (int c = 0; c < spec.nchannels; ++c)
+    {
+        image.channelTypes.push_back(spec.channelformat(c).c_str());
+    }
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+    {
+        image.attributes[p.name().string()] = p.type() == OIIO::TypeDesc::STRING
+                                                  ? std::string(p.get_string())
+                                                  : spec.metadata_val(p, false);
+    }
+    image.format = input.format_name();
+    return image;
+}
+
 std::string Transform(const std::string& in, const std::string& out, const PixelProcess& process,
                       const std::string& note)
 {
@@ -113,7 +135,7 @@ std::string Transform(const std::string& in, const std::string& out, const Pixel
         int rgb[3];
         FindRgb(spec, rgb);
         process(pixels.data(), spec.width, long(spec.height) * std::max(1, spec.depth),
-                spec.nchannels, rgb);
+                spec.nchannels, rgb, Header(*input, spec));
         OIIO::ImageSpec outSpec = spec;  // pixel type, channel names, metadata
         if (!note.empty())
         {
@@ -183,23 +205,7 @@ std::string Read(const std::string& path, ImageData& image, bool pixels)
         }
         const OIIO::ImageSpec spec = input->spec();
         CheckImageSize(path, spec);
-        image.width = spec.width;
-        image.height = spec.height * std::max(1, spec.depth);
-        image.channels = spec.nchannels;
-        image.channelNames = spec.channelnames;
-        image.channelTypes.clear();
-        for (int c = 0; c < spec.nchannels; ++c)
-        {
-            image.channelTypes.push_back(spec.channelformat(c).c_str());
-        }
-        image.attributes.clear();
-        for (const OIIO::ParamValue& p : spec.extra_attribs)
-        {
-            image.attributes[p.name().string()] = p.type() == OIIO::TypeDesc::STRING
-                                                      ? std::string(p.get_string())
-                                                      : spec.metadata_val(p, false);
-        }
-        image.format = input->format_name();
+        image = Header(*input, spec);
         image.pixels.clear();
         if (pixels)
         {

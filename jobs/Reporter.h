@@ -16,7 +16,9 @@ class Reporter
 {
 public:
     virtual ~Reporter() = default;
-    /// A note on the input or on what the job assumed: one line.
+    /// A note on the input or on what the job assumed: one line. It may
+    /// name parameters as ParameterError's templates do ({colorspace}); a
+    /// face spells them (SpellParameters) as it spells its errors.
     virtual void note(const std::string& line) { (void)line; }
     /// A progress line, and how much of the job is done (0 to 1; negative
     /// when the line is not a fraction of the whole).

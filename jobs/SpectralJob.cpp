@@ -266,13 +266,40 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
             }
         }
         ImageDescription d = LinearImageDescription(working, ColorSpaceName(working));
+        PixelType type = PixelType::FLOAT;
+        float* out3 = outChannels == 4 ? pixels.data() : rgb.data();
+        if (IsDisplayReferredFile(out))
+        {
+            // A display-referred format: sRGB-encoded Rec.709, clipped.
+            const ImageEncoding srgb = NamedEncoding("srgb");
+            const int index[3] = {0, 1, 2};
+            if (const auto cpu = LinearToEncoding(working, srgb))
+            {
+                ApplyToBuffer(cpu, out3, image.width, image.height, outChannels, index, r.threads);
+            }
+            size_t clipped = 0;
+            for (size_t p = 0; p < count; ++p)
+            {
+                const float* v = out3 + p * size_t(outChannels);
+                clipped += std::any_of(v, v + 3, [](float x) { return x < 0.0f || x > 1.0f; });
+            }
+            if (clipped > 0)
+            {
+                reporter.note(out + ": " + std::to_string(clipped) + " of " +
+                              std::to_string(count) +
+                              " pixels left 0-1 and are clipped: the format holds "
+                              "display-referred code values (write an EXR to keep them)");
+            }
+            d = LinearImageDescription(FindRgbSpace("rec709"), "sRGB");
+            d.attributes = {{"colorInteropID", "srgb_rec709_scene"}};
+            type = PixelType::UINT8;
+        }
         d.attributes.push_back({"bandlight:transform",
                                 "spectral " + image.layout.describe() + ", " + conversion.applied});
-        WriteImage(out, outChannels == 4 ? pixels.data() : rgb.data(), image.width, image.height,
-                   outChannels,
+        WriteImage(out, out3, image.width, image.height, outChannels,
                    outChannels == 4 ? std::vector<std::string>{"R", "G", "B", "A"}
                                     : std::vector<std::string>{"R", "G", "B"},
-                   d, PixelType::FLOAT);
+                   d, type);
     };
     result.run = RunFrameSet(r.files, reporter, one);
     return result;

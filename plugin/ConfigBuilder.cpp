@@ -32,19 +32,6 @@ constexpr const char* kBandSpaceName = "Bands VB-VG-VR (lecture)";
 constexpr const char* kFamilyLooks = "bandlight";
 constexpr const char* kLutFolder = "luts";
 
-/// Matrix from linear RGB space `src` to `dst`, adapting the white with
-/// Bradford when the two whites differ (as the ACES and Blender configs do).
-Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst)
-{
-    const Mat3 ms = RgbToXyzMatrix(src.chromaticities);
-    const Mat3 md = RgbToXyzMatrix(dst.chromaticities);
-    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
-    const Vec3 wd = WhiteXyz(dst.chromaticities.wx, dst.chromaticities.wy);
-    const Mat3 cat = (ws - wd).norm() < 1e-9 ? Mat3::Identity()
-                                             : AdaptationMatrix(ws, wd, AdaptationMethod::BRADFORD);
-    return md.inverse() * cat * ms;
-}
-
 /// Linear RGB → CIE XYZ with a D65 white (Bradford when the space's white differs).
 Mat3 SpaceToXyzD65(const RgbSpace& src)
 {
@@ -65,17 +52,6 @@ OCIO::ColorSpaceRcPtr SceneSpace(const std::string& name, const std::string& fam
     cs->setDescription(description.c_str());
     cs->setEncoding(encoding.c_str());
     return cs;
-}
-
-/// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded → linear.
-OCIO::TransformRcPtr SrgbDecode()
-{
-    OCIO::ExponentWithLinearTransformRcPtr t = OCIO::ExponentWithLinearTransform::Create();
-    const double gamma[4] = {2.4, 2.4, 2.4, 1.0};
-    const double offset[4] = {0.055, 0.055, 0.055, 0.0};
-    t->setGamma(gamma);
-    t->setOffset(offset);
-    return t;
 }
 
 /// A transform taking the base config's scene_linear space to its reference,
@@ -278,6 +254,30 @@ MethodSpec ConfigOptions::method(const std::string& name) const
 std::string NamedTransformName(const std::string& lookName)
 {
     return "relight_" + lookName;
+}
+
+/// Matrix from linear RGB space `src` to `dst`, adapting the white with
+/// Bradford when the two whites differ (as the ACES and Blender configs do).
+Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst)
+{
+    const Mat3 ms = RgbToXyzMatrix(src.chromaticities);
+    const Mat3 md = RgbToXyzMatrix(dst.chromaticities);
+    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
+    const Vec3 wd = WhiteXyz(dst.chromaticities.wx, dst.chromaticities.wy);
+    const Mat3 cat = (ws - wd).norm() < 1e-9 ? Mat3::Identity()
+                                             : AdaptationMatrix(ws, wd, AdaptationMethod::BRADFORD);
+    return md.inverse() * cat * ms;
+}
+
+/// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded → linear.
+OCIO::TransformRcPtr SrgbDecode()
+{
+    OCIO::ExponentWithLinearTransformRcPtr t = OCIO::ExponentWithLinearTransform::Create();
+    const double gamma[4] = {2.4, 2.4, 2.4, 1.0};
+    const double offset[4] = {0.055, 0.055, 0.055, 0.0};
+    t->setGamma(gamma);
+    t->setOffset(offset);
+    return t;
 }
 
 std::string ColorSpaceName(const RgbSpace& space)

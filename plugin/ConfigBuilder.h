@@ -114,6 +114,15 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir,
 /// "relight_<look>" (OCIO does not let the two share a name).
 std::string NamedTransformName(const std::string& lookName);
 
+/// Matrix from linear RGB space `src` to `dst`, the whites adapted with
+/// Bradford when they differ (as the ACES and Blender configs do): what a
+/// bandlight config's colour spaces hold.
+Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst);
+
+/// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded →
+/// linear (alpha unchanged); inverse direction to encode.
+OCIO::TransformRcPtr SrgbDecode();
+
 /// The name of the colour space that holds a built-in RGB space in configs
 /// bandlight builds ("ACEScg", "Linear Rec.709 (sRGB)", ...).
 std::string ColorSpaceName(const RgbSpace& space);

@@ -15,7 +15,7 @@ seconds=${2:?usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]}
 shift 2
 targets=("$@")
 if ((${#targets[@]} == 0)); then
-  targets=(fuzz_csv fuzz_cgats fuzz_scene fuzz_method fuzz_config fuzz_camera)
+  targets=(fuzz_csv fuzz_cgats fuzz_scene fuzz_method fuzz_config fuzz_camera fuzz_spectral_channels)
 fi
 
 status=0

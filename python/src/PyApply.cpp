@@ -113,7 +113,13 @@ input's pixel type, channels, alpha and metadata, and appears only when it
 is complete. look, config: a look of a config (its folder or .ocio file),
 applied in colorspace (default: the config's scene_linear role). Otherwise
 src, dst (names, files or Spectrum) and method: the illuminant change in
-working_space (rootpoly natively, the other methods through OCIO).
+working_space (rootpoly natively, the other methods through OCIO). Images
+say what they are: sRGB-encoded files (PNG, JPEG, 8- and 16-bit TIFF) are
+decoded to linear Rec.709, and files whose colorInteropID or chromaticities
+name other primaries converted, to the space the work runs in and back;
+untagged float files are taken as that space (a NoteWarning says so).
+Without a look, colorspace names what the file holds instead (a built-in
+space such as "acescg" or "rec709", or "srgb").
 training: fit3x3's / rootpoly's remittances. Runs with the GIL released on
 threads threads (0: all cores). frames: a frame set as farms hand them out
 ("1001-1100", "1001-1100x2", "1001-1010,1020"). skip_existing: frames whose

@@ -137,7 +137,7 @@ PythonReporter::PythonReporter(py::object callback) : m_callback(std::move(callb
 
 void PythonReporter::note(const std::string& line)
 {
-    Warn(line);
+    Warn(SpellParameters(line, Face::PYTHON));
 }
 
 void PythonReporter::progress(const std::string&, double fraction)

@@ -44,6 +44,16 @@ def run_cli(*args, check=True, cwd=None):
     return p
 
 
+def acescg_spec(width, height, channels):
+    """A float ImageSpec that says its pixels are linear ACEScg (the Color
+    Interop Forum's ID, as bandlight writes it): plates as a pipeline tags
+    them, so `apply` converts nothing and notes nothing."""
+    import OpenImageIO as oiio
+    spec = oiio.ImageSpec(width, height, channels, "float")
+    spec.attribute("colorInteropID", "lin_ap1_scene")
+    return spec
+
+
 def cli_json(*args):
     return json.loads(run_cli(*args).stdout)
 

@@ -6,7 +6,7 @@ import OpenImageIO as oiio
 import pytest
 
 import bandlight
-from conftest import cli_error, run_cli
+from conftest import acescg_spec, cli_error, run_cli
 
 
 def write_plate(path, seed=1, channels=4):
@@ -15,7 +15,7 @@ def write_plate(path, seed=1, channels=4):
     if channels == 4:
         px[..., 3] = 0.5
     out = oiio.ImageOutput.create(str(path))
-    assert out.open(str(path), oiio.ImageSpec(20, 12, channels, "float"))
+    assert out.open(str(path), acescg_spec(20, 12, channels))
     assert out.write_image(px)
     out.close()
     return px

@@ -8,6 +8,7 @@ import OpenImageIO as oiio
 import pytest
 
 import bandlight
+from conftest import acescg_spec
 
 distributed = pytest.importorskip("distributed")
 da = pytest.importorskip("dask.array")
@@ -35,7 +36,7 @@ def test_a_frame_sequence_spread_over_the_workers(client, tmp_path):
     for f in range(1, 9):
         px = np.full((8, 16, 3), 0.05 * f, np.float32)
         out = oiio.ImageOutput.create(str(tmp_path / f"p.{f:04d}.exr"))
-        assert out.open(str(tmp_path / f"p.{f:04d}.exr"), oiio.ImageSpec(16, 8, 3, "float"))
+        assert out.open(str(tmp_path / f"p.{f:04d}.exr"), acescg_spec(16, 8, 3))
         assert out.write_image(px)
         out.close()
     spread = bandlight.apply(tmp_path / "p.####.exr", tmp_path / "d.####.exr", frames="1-8",

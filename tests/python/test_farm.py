@@ -10,7 +10,7 @@ import subprocess
 import numpy as np
 import OpenImageIO as oiio
 
-from conftest import SOURCE_DIR, _exe, run_cli
+from conftest import acescg_spec, SOURCE_DIR, _exe, run_cli
 
 FARM = SOURCE_DIR / "docs" / "renderfarm"
 
@@ -23,7 +23,7 @@ def make_show(tmp_path):
         px = np.full((8, 16, 4), 0.18, np.float32)
         px[..., 0] = 0.01 * (f - 1000)
         out = oiio.ImageOutput.create(str(plates / f"A001.{f}.exr"))
-        assert out.open(str(plates / f"A001.{f}.exr"), oiio.ImageSpec(16, 8, 4, "float"))
+        assert out.open(str(plates / f"A001.{f}.exr"), acescg_spec(16, 8, 4))
         assert out.write_image(px)
         out.close()
     run_cli("package", "--out", tmp_path / "ocio" / "bandlight-package")

@@ -8,7 +8,7 @@ import sys
 import numpy as np
 import OpenImageIO as oiio
 
-from conftest import SOURCE_DIR
+from conftest import acescg_spec, SOURCE_DIR
 
 
 def readme_example():
@@ -24,7 +24,7 @@ def test_readme_example_runs(tmp_path):
     plate = rng.uniform(0.0, 2.0, (32, 48, 4)).astype(np.float32)
     plate[..., 3] = 1.0
     out = oiio.ImageOutput.create(str(tmp_path / "plate.exr"))
-    assert out.open(str(tmp_path / "plate.exr"), oiio.ImageSpec(48, 32, 4, "float"))
+    assert out.open(str(tmp_path / "plate.exr"), acescg_spec(48, 32, 4))
     assert out.write_image(plate)
     out.close()
     code = readme_example() + (

@@ -18,7 +18,7 @@ import PyOpenColorIO as OCIO
 import pytest
 
 import bandlight
-from conftest import run_cli
+from conftest import acescg_spec, run_cli
 
 
 def processor_matrix(transform):
@@ -103,7 +103,7 @@ def test_linear_methods_match_the_commands_clf(tmp_path, method):
 def write_exr(path, pixels):
     out = oiio.ImageOutput.create(str(path))
     h, w, c = pixels.shape
-    assert out.open(str(path), oiio.ImageSpec(w, h, c, "float")), oiio.geterror()
+    assert out.open(str(path), acescg_spec(w, h, c)), oiio.geterror()
     assert out.write_image(pixels)
     out.close()
 

@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/ImageColour.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "plugin/ConfigBuilder.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Exception.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+
+std::string Lower(std::string s)
+{
+    for (char& c : s)
+    {
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return s;
+}
+
+const char* kOptions =
+    "say what the file holds with {colorspace} (a built-in space such as "
+    "acescg or rec709, or srgb), or choose the space the work runs in with "
+    "{working_space}";
+
+/// The Color Interop Forum's IDs bandlight reads (colorInteropID).
+struct InteropId
+{
+    const char* id;
+    const char* space;
+    bool srgb;
+};
+constexpr InteropId kInteropIds[] = {
+    {"lin_ap1_scene", "acescg", false},      {"lin_ap0_scene", "aces2065-1", false},
+    {"lin_rec709_scene", "rec709", false},   {"lin_rec2020_scene", "rec2020", false},
+    {"lin_p3d65_scene", "p3-d65", false},    {"srgb_rec709_scene", "rec709", true},
+    {"srgb_rec709_display", "rec709", true},
+};
+
+bool SameChromaticities(const Chromaticities& a, const Chromaticities& b)
+{
+    const double d[] = {a.rx - b.rx, a.ry - b.ry, a.gx - b.gx, a.gy - b.gy,
+                        a.bx - b.bx, a.by - b.by, a.wx - b.wx, a.wy - b.wy};
+    return std::all_of(std::begin(d), std::end(d), [](double v) { return std::abs(v) < 2e-3; });
+}
+
+std::string Describe(const Chromaticities& c)
+{
+    std::ostringstream o;
+    o.precision(4);
+    o << "R (" << c.rx << ", " << c.ry << ") G (" << c.gx << ", " << c.gy << ") B (" << c.bx << ", "
+      << c.by << ") white (" << c.wx << ", " << c.wy << ")";
+    return o.str();
+}
+
+/// A built-in space of these chromaticities, or a space of the file's own.
+RgbSpace SpaceOf(const Chromaticities& c)
+{
+    for (const RgbSpace& s : BuiltinRgbSpaces())
+    {
+        if (SameChromaticities(s.chromaticities, c))
+        {
+            return s;
+        }
+    }
+    RgbSpace own;
+    own.name = "file";
+    own.displayName = "the file's primaries " + Describe(c);
+    own.chromaticities = c;
+    return own;
+}
+
+/// A built-in space by bandlight's name or the name its configs give it.
+const RgbSpace* SpaceNamed(const std::string& name)
+{
+    for (const RgbSpace& s : BuiltinRgbSpaces())
+    {
+        if (Lower(ColorSpaceName(s)) == Lower(name))
+        {
+            return &s;
+        }
+    }
+    try
+    {
+        return &FindRgbSpace(name);
+    }
+    catch (const Exception&)
+    {
+        return nullptr;
+    }
+}
+
+/// "0.64, 0.33, ..." (OIIO's text of a float[8]) → chromaticities.
+std::optional<Chromaticities> ParseChromaticities(const std::string& text)
+{
+    double v[8];
+    const char* p = text.c_str();
+    for (double& x : v)
+    {
+        while (*p == ' ' || *p == ',' || *p == '(' || *p == '{')
+        {
+            ++p;
+        }
+        char* end = nullptr;
+        x = std::strtod(p, &end);
+        if (end == p || !std::isfinite(x))
+        {
+            return std::nullopt;
+        }
+        p = end;
+    }
+    return Chromaticities{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]};
+}
+
+bool IntegerChannels(const ImageData& header)
+{
+    return !header.channelTypes.empty() &&
+           std::all_of(header.channelTypes.begin(), header.channelTypes.end(),
+                       [](const std::string& t)
+                       { return t.rfind("uint", 0) == 0 || t.rfind("int", 0) == 0; });
+}
+
+}  // namespace
+
+std::string SpaceLabel(const RgbSpace& space)
+{
+    static const std::pair<const char*, const char*> kLabels[] = {
+        {"acescg", "ACEScg"},    {"aces2065-1", "ACES2065-1"}, {"rec709", "Rec.709"},
+        {"rec2020", "Rec.2020"}, {"p3-d65", "P3-D65"},         {"ebu3213", "EBU Tech 3213"},
+    };
+    for (const auto& [key, label] : kLabels)
+    {
+        if (space.name == key)
+        {
+            return label;
+        }
+    }
+    return space.displayName;
+}
+
+std::string ImageEncoding::describe() const
+{
+    std::ostringstream g;
+    g << "gamma " << gamma << "-encoded ";
+    return (srgbCurve     ? std::string("sRGB-encoded ")
+            : gamma > 0.0 ? g.str()
+                          : "linear ") +
+           SpaceLabel(space);
+}
+
+ImageEncoding NamedEncoding(const std::string& name)
+{
+    ImageEncoding e;
+    e.evidence = "as given";
+    if (Lower(name) == "srgb")
+    {
+        e.space = FindRgbSpace("rec709");
+        e.srgbCurve = true;
+        return e;
+    }
+    const RgbSpace* s = SpaceNamed(name);
+    if (!s)
+    {
+        throw ParameterError("{colorspace} '" + OneLine(name, 80) +
+                             "' is not a built-in RGB space (acescg, aces2065-1, rec709, "
+                             "rec2020, p3-d65, ebu3213) or srgb");
+    }
+    e.space = *s;
+    return e;
+}
+
+bool IsDisplayReferred(const ImageData& header)
+{
+    return IntegerChannels(header) || header.format == "png" || header.format == "jpeg";
+}
+
+bool IsDisplayReferredFile(const std::string& path)
+{
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    {
+        return false;
+    }
+    const std::string ext = Lower(path.substr(dot + 1));
+    for (const char* e : {"png", "jpg", "jpeg", "jpe", "jfif", "gif", "bmp", "webp", "ppm", "pgm",
+                          "pnm", "tga", "ico"})
+    {
+        if (ext == e)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& file,
+                                    const RgbSpace& fallback)
+{
+    const auto get = [&](const char* key) -> const std::string*
+    {
+        const auto it = header.attributes.find(key);
+        return it == header.attributes.end() || it->second.empty() ? nullptr : &it->second;
+    };
+    const std::string* interop = get("colorInteropID");
+    const std::string* chroma = get("chromaticities");
+    const std::string* named = get("bandlight:colorSpace");
+    const std::string* oiio = get("oiio:ColorSpace");
+    const std::string what = file + ": ";
+    std::optional<ImageEncoding> found;
+    const auto agree = [&](const ImageEncoding& e)
+    {
+        if (found && (found->srgbCurve != e.srgbCurve || found->gamma != e.gamma ||
+                      !SameChromaticities(found->space.chromaticities, e.space.chromaticities)))
+        {
+            throw ParameterError(what + "says it is " + found->describe() + " (" + found->evidence +
+                                 ") and " + e.describe() + " (" + e.evidence + "); " + kOptions);
+        }
+        if (!found)
+        {
+            found = e;
+        }
+    };
+    if (interop)
+    {
+        const std::string id = Lower(*interop);
+        const auto it = std::find_if(std::begin(kInteropIds), std::end(kInteropIds),
+                                     [&](const InteropId& k) { return id == k.id; });
+        if (it == std::end(kInteropIds))
+        {
+            throw ParameterError(what + "has colorInteropID '" + OneLine(*interop, 60) +
+                                 "', which bandlight does not convert; " + kOptions);
+        }
+        ImageEncoding e;
+        e.space = FindRgbSpace(it->space);
+        e.srgbCurve = it->srgb;
+        e.evidence = "colorInteropID " + std::string(it->id);
+        agree(e);
+    }
+    if (chroma)
+    {
+        const std::optional<Chromaticities> c = ParseChromaticities(*chroma);
+        if (!c)
+        {
+            throw Exception(what + "its chromaticities attribute '" + OneLine(*chroma, 80) +
+                            "' is not 8 numbers");
+        }
+        ImageEncoding e;
+        e.space = SpaceOf(*c);
+        e.evidence = "chromaticities";
+        // The attribute names primaries; the curve is the format's.
+        e.srgbCurve = found ? found->srgbCurve : IsDisplayReferred(header);
+        e.gamma = found ? found->gamma : 0.0;
+        agree(e);
+    }
+    if (named)
+    {
+        const RgbSpace* s = SpaceNamed(*named);
+        if (!s)
+        {
+            throw ParameterError(what + "has bandlight:colorSpace '" + OneLine(*named, 60) +
+                                 "': not colour bandlight converts; " + kOptions);
+        }
+        ImageEncoding e;
+        e.space = *s;
+        e.evidence = "bandlight:colorSpace";
+        agree(e);
+    }
+    if (oiio && !found)
+    {
+        const std::string v = Lower(*oiio);
+        ImageEncoding e;
+        e.evidence = "oiio:ColorSpace " + *oiio;
+        double gamma = 0.0;
+        char tail = 0;
+        if (v == "srgb" || v == "srgb_rec709_scene")
+        {
+            e.space = FindRgbSpace("rec709");
+            e.srgbCurve = true;
+            found = e;
+        }
+        else if (std::sscanf(v.c_str(), "gamma%lf%c", &gamma, &tail) == 1 && gamma >= 0.1 &&
+                 gamma <= 10.0)
+        {
+            // PNG's gAMA chunk as OpenImageIO reports it: Rec.709 primaries.
+            e.space = FindRgbSpace("rec709");
+            e.gamma = gamma;
+            found = e;
+        }
+        else if (v == "linear" || v == "scene_linear" || v == "lin_srgb")
+        {
+            // OpenImageIO calls every EXR "Linear": the primaries are not
+            // said. Integer formats without primaries are Rec.709 (the sRGB
+            // chunk's and TIFF's default).
+            if (IntegerChannels(header))
+            {
+                e.space = FindRgbSpace("rec709");
+                found = e;
+            }
+        }
+        else if (const RgbSpace* s = SpaceNamed(*oiio))
+        {
+            e.space = *s;
+            found = e;
+        }
+        else
+        {
+            throw ParameterError(what + "has oiio:ColorSpace '" + OneLine(*oiio, 60) +
+                                 "', an encoding bandlight does not convert; " + kOptions);
+        }
+    }
+    if (found)
+    {
+        return *found;
+    }
+    if (IsDisplayReferred(header))
+    {
+        ImageEncoding e;
+        e.space = FindRgbSpace("rec709");
+        e.srgbCurve = true;
+        e.evidence = "an untagged " + header.format + " of integer code values";
+        return e;
+    }
+    ImageEncoding e;
+    e.space = fallback;
+    e.assumed = true;
+    e.evidence = "untagged";
+    return e;
+}
+
+namespace
+{
+OCIO::ConstCPUProcessorRcPtr Cpu(const OCIO::GroupTransformRcPtr& g)
+{
+    if (g->getNumTransforms() == 0)
+    {
+        return nullptr;
+    }
+    // The curves in full precision: OCIO's fast pow approximation is off by
+    // up to 1e-4 of the value, a code value of a 16-bit file.
+    const auto optimisation =
+        OCIO::OptimizationFlags(OCIO::OPTIMIZATION_DEFAULT & ~OCIO::OPTIMIZATION_FAST_LOG_EXP_POW);
+    return OCIO::Config::CreateRaw()->getProcessor(g)->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, optimisation);
+}
+
+/// A pure power curve, encoded → linear (v^gamma; negative values mirrored).
+OCIO::TransformRcPtr GammaDecode(double gamma)
+{
+    OCIO::ExponentTransformRcPtr t = OCIO::ExponentTransform::Create();
+    const double g[4] = {gamma, gamma, gamma, 1.0};
+    t->setValue(g);
+    t->setNegativeStyle(OCIO::NEGATIVE_MIRROR);
+    return t;
+}
+}  // namespace
+
+OCIO::ConstCPUProcessorRcPtr EncodingToLinear(const ImageEncoding& from, const RgbSpace& to)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    if (from.srgbCurve)
+    {
+        g->appendTransform(SrgbDecode());
+    }
+    else if (from.gamma > 0.0)
+    {
+        g->appendTransform(GammaDecode(from.gamma));
+    }
+    if (!SameChromaticities(from.space.chromaticities, to.chromaticities))
+    {
+        g->appendTransform(GuardedMatrixTransform(SpaceToSpace(from.space, to)));
+    }
+    return Cpu(g);
+}
+
+OCIO::ConstCPUProcessorRcPtr LinearToEncoding(const RgbSpace& from, const ImageEncoding& to)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    if (!SameChromaticities(from.chromaticities, to.space.chromaticities))
+    {
+        g->appendTransform(GuardedMatrixTransform(SpaceToSpace(from, to.space)));
+    }
+    if (to.srgbCurve || to.gamma > 0.0)
+    {
+        OCIO::TransformRcPtr encode = to.srgbCurve ? SrgbDecode() : GammaDecode(to.gamma);
+        encode->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+        g->appendTransform(encode);
+    }
+    return Cpu(g);
+}
+
+}  // namespace bandlight::jobs
