@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <set>
 
 #include "jobs/Frames.h"
@@ -117,10 +118,14 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
                                                          OCIO::OPTIMIZATION_DEFAULT),
                                                      r.threads);
     // Each note once for a sequence: the frame's name as the pattern.
+    // Frames run on several threads at once (RunFrameSet).
     std::set<std::string> noted;
+    std::mutex mu;
     const auto applyOne = [&](const std::string& in, const std::string& out)
     {
-        for (std::string n : ApplyToImage(work, in, out, result.applied, colour))
+        const std::vector<std::string> notes = ApplyToImage(work, in, out, result.applied, colour);
+        std::lock_guard<std::mutex> lock(mu);
+        for (std::string n : notes)
         {
             for (const auto& [name, pattern] : {std::pair{in, r.input}, std::pair{out, r.output}})
             {

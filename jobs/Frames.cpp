@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/Frames.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <thread>
 #include <unordered_set>
 
 #include "spectral/Exception.h"
@@ -210,6 +215,24 @@ std::vector<int> ParseFrameRange(const std::string& text)
     return frames;
 }
 
+namespace
+{
+/// Frames whose pixels (four floats a channel value, the first frame's file
+/// size times four as an estimate of its decoded size) fit in half the
+/// machine's memory, at most the cores and at most 4.
+size_t FramesInFlight(const std::string& first)
+{
+    const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    std::error_code ec;
+    const double bytes = double(std::filesystem::file_size(first, ec));
+    const double pages = double(::sysconf(_SC_PHYS_PAGES));
+    const double page = double(::sysconf(_SC_PAGESIZE));
+    const double budget = pages > 0 && page > 0 ? 0.5 * pages * page : 8.0 * double(1 << 30);
+    const size_t fit = ec || bytes <= 0.0 ? cores : size_t(budget / (4.0 * bytes));
+    return std::max<size_t>(1, std::min({cores, size_t(4), fit}));
+}
+}  // namespace
+
 FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
                      const std::function<void(const std::string& in, const std::string& out)>& one)
 {
@@ -231,36 +254,95 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
     }
     const std::vector<int> frames = ParseFrameRange(r.frames);
     const auto t0 = std::chrono::steady_clock::now();
+    // Frames in flight: each reads, works and writes on its own thread, so
+    // one frame's reading and writing overlap another's; as many as there
+    // are cores (at most 4), fewer when their pixels would not fit in half
+    // the machine's memory.
+    const size_t inFlight = std::min(
+        frames.size(), r.inFlight > 0 ? size_t(r.inFlight)
+                                      : FramesInFlight(ExpandFramePattern(r.input, frames[0])));
+    std::mutex mu;
+    size_t next = 0, finished = 0;
+    bool stop = false;
+    std::vector<std::exception_ptr> errors(frames.size());
+    std::vector<std::string> states(frames.size());
+    const auto worker = [&]
+    {
+        for (;;)
+        {
+            size_t i;
+            {
+                std::lock_guard<std::mutex> lock(mu);
+                if (stop || next == frames.size())
+                {
+                    return;
+                }
+                i = next++;
+            }
+            const int f = frames[i];
+            const std::string out = ExpandFramePattern(r.output, f);
+            std::string state = "done";
+            if (r.skipExisting && std::filesystem::exists(out))
+            {
+                state = "skipped (exists)";
+            }
+            else
+            {
+                try
+                {
+                    one(ExpandFramePattern(r.input, f), out);
+                }
+                catch (const std::exception& e)
+                {
+                    errors[i] = std::current_exception();
+                    state = "failed";
+                }
+            }
+            std::lock_guard<std::mutex> lock(mu);
+            states[i] = state;
+            stop = stop || (state == "failed" && !r.keepGoing);
+            ++finished;
+            reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
+                                  std::to_string(finished) + " of " +
+                                  std::to_string(frames.size()) + ")",
+                              double(finished) / double(frames.size()));
+        }
+    };
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < inFlight; ++t)
+    {
+        pool.emplace_back(worker);
+    }
+    worker();
+    for (std::thread& t : pool)
+    {
+        t.join();
+    }
     for (size_t i = 0; i < frames.size(); ++i)
     {
-        const int f = frames[i];
-        const std::string out = ExpandFramePattern(r.output, f);
-        std::string state = "done";
-        if (r.skipExisting && std::filesystem::exists(out))
+        if (states[i] == "done")
+        {
+            ++run.frames;
+        }
+        else if (states[i] == "skipped (exists)")
         {
             ++run.skipped;
-            state = "skipped (exists)";
         }
-        else
+        else if (errors[i])
         {
+            if (!r.keepGoing)
+            {
+                std::rethrow_exception(errors[i]);  // the first failing frame, in order
+            }
             try
             {
-                one(ExpandFramePattern(r.input, f), out);
-                ++run.frames;
+                std::rethrow_exception(errors[i]);
             }
             catch (const std::exception& e)
             {
-                if (!r.keepGoing)
-                {
-                    throw;
-                }
-                run.failed.push_back({f, e.what()});
-                state = "failed";
+                run.failed.push_back({frames[i], e.what()});
             }
         }
-        reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
-                              std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")",
-                          double(i + 1) / double(frames.size()));
     }
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.sequence = true;

@@ -58,12 +58,19 @@ struct FrameSetRequest
     bool skipExisting = false;
     /// A frame that fails does not stop the others; the run lists it.
     bool keepGoing = false;
+    /// Frames read, worked and written at once (0: as many as there are
+    /// cores, at most 4, fewer when their pixels would not fit in half the
+    /// machine's memory).
+    int inFlight = 0;
 };
 
-/// Calls `one(in, out)` for the image, or for each frame of the set in
-/// order, reporting progress per frame. Without keepGoing the first failing
-/// frame throws (the frames before it are done). Throws ParameterError for
-/// a pattern without frames or frames without patterns.
+/// Calls `one(in, out)` for the image, or for each frame of the set: frames
+/// start in order, `inFlight` of them at once on their own threads (`one`
+/// must be safe to call so), reporting progress as each finishes. Without
+/// keepGoing no frame starts after one fails, and the first failing frame
+/// (in order) throws once those in flight are done (the frames before it,
+/// and any in flight beside it, are written). Throws ParameterError for a
+/// pattern without frames or frames without patterns.
 FrameRun RunFrameSet(const FrameSetRequest& request, Reporter& reporter,
                      const std::function<void(const std::string& in, const std::string& out)>& one);
 

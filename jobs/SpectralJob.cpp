@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <Eigen/LU>
 
@@ -228,11 +229,13 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
     (void)r.options.layoutOptions();
     SpectralResult result;
     bool first = true;
+    std::mutex mu;  // frames run on several threads at once (RunFrameSet)
     const auto one = [&](const std::string& in, const std::string& out)
     {
         const SpectralImage image = ReadSpectralImage(in, r.options);
         const SpectralConversion conversion =
             MakeSpectralConversion(image.layout, image.channels, r.options);
+        std::unique_lock<std::mutex> lock(mu);
         if (first)
         {
             result.layout = image.layout.describe();
@@ -247,6 +250,7 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
             }
             first = false;
         }
+        lock.unlock();
         const size_t count = size_t(image.width) * size_t(image.height);
         // R, G, B and the image's alpha, if it has one.
         const auto alpha = std::find(image.channelNames.begin(), image.channelNames.end(), "A");
@@ -285,6 +289,7 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
             }
             if (clipped > 0)
             {
+                const std::lock_guard<std::mutex> noteLock(mu);
                 reporter.note(out + ": " + std::to_string(clipped) + " of " +
                               std::to_string(count) +
                               " pixels left 0-1 and are clipped: the format holds "
