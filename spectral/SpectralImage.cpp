@@ -291,7 +291,9 @@ SpectralLayout FindSpectralLayout(const std::string& file,
         const auto it = attributes.find(key);
         return it == attributes.end() ? nullptr : &it->second;
     };
-    if (const std::string* v = attribute("spectralLayoutVersion"); v && *v != "1.0")
+    // "1.0" as the layout writes it (a float 1, as some tools write it, too).
+    if (const std::string* v = attribute("spectralLayoutVersion");
+        v && *v != "1.0" && std::strtod(v->c_str(), nullptr) != 1.0)
     {
         throw Exception(In(file) + "spectralLayoutVersion is '" + OneLine(*v, 40) +
                         "'; bandlight reads version 1.0 of the layout (Fichet et al. 2021)");
