@@ -74,7 +74,9 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
     const Eigen::Matrix<double, 3, Eigen::Dynamic> xyz =
         SpectralXyzWeights(layout, observer, lighting, &c.notes);
     Mat3 toRgb = RgbToXyzMatrix(working.chromaticities).inverse();
-    // The light the result shows: `to` when relit or rendered, else none.
+    // The light the result shows: `to` when relit or rendered, `from` when
+    // an emissive image is only integrated, else none known.
+    const bool relit = !reflective && !o.from.spectrum.empty() && !o.to.spectrum.empty();
     const bool shown = reflective || !o.from.spectrum.empty();
     const Plates plates = o.plates.parsed();
     if (plates.convention == PlateConvention::BALANCED)
@@ -82,8 +84,9 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
         if (shown)
         {
             // The white the image shows, as this integration sees it (a
-            // white reflector; relit, at the source's luminance), onto the
-            // working white: white stays exactly (1, 1, 1) on any grid.
+            // white reflector under `from`, relit or not; rendered under
+            // `to`), onto the working white: white stays exactly (1, 1, 1)
+            // on any grid.
             const std::vector<double> one =
                 reflective ? std::vector<double>(layout.wavelengths.size(), 1.0)
                            : LightOnLayout(layout, o.from.spectrum);
@@ -96,8 +99,8 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
         else
         {
             c.notes.push_back(
-                "the image is only integrated: no light is known to balance "
-                "(give {src=}S1 {dst=}S2 to relight); written as lit");
+                "the image is only integrated: no light is known to balance (give {src=}S1, "
+                "the light it was lit by, and {dst=}S2 to relight); written as lit");
         }
     }
     c.weights.setZero(3, channels);
@@ -107,7 +110,8 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
         c.weights.col(layout.channels[i]) = rgb.col(Eigen::Index(i));
     }
     c.applied = reflective ? "rendered under " + o.to.name
-                : shown    ? "relit " + o.from.name + " -> " + o.to.name
+                : relit    ? "relit " + o.from.name + " -> " + o.to.name
+                : shown    ? "integrated, lit by " + o.from.name
                            : "integrated";
     c.applied += c.balanced ? ", balanced (" + AdaptationName(plates.adaptation) + ")" : ", lit";
     c.applied += ", " + working.name;
@@ -116,7 +120,7 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
 
 void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
                          const std::vector<std::string>& channelNames, const float* pixels,
-                         size_t count, int channels)
+                         size_t count, int channels, int width)
 {
     for (size_t p = 0; p < count; ++p)
     {
@@ -131,8 +135,11 @@ void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
             const std::string what = std::isnan(x)   ? "NaN"
                                      : std::isinf(x) ? "infinite"
                                                      : "negative (" + std::to_string(x) + ")";
+            const std::string where = width > 0 ? "(" + std::to_string(p % size_t(width)) + ", " +
+                                                      std::to_string(p / size_t(width)) + ")"
+                                                : std::to_string(p);
             throw Exception(file + ": channel '" + OneLine(channelNames[size_t(c)], 80) + "' is " +
-                            what + " at pixel " + std::to_string(p) +
+                            what + " at pixel " + where +
                             (layout.kind == SpectralKind::EMISSIVE
                                  ? "; radiance must be finite and not negative"
                                  : "; a remittance must be finite and not negative"));
@@ -211,7 +218,7 @@ SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& 
     image.channelNames = std::move(data.channelNames);
     image.pixels = std::move(data.pixels);
     CheckSpectralPixels(image.layout, path, image.channelNames, image.pixels.data(),
-                        size_t(image.width) * size_t(image.height), image.channels);
+                        size_t(image.width) * size_t(image.height), image.channels, image.width);
     return image;
 }
 

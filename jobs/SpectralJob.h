@@ -20,8 +20,8 @@ namespace bandlight::jobs
 /// space, the plate convention and the observer (docs/spectral.md).
 struct SpectralOptions
 {
-    /// Emissive images: the light the scene was lit by (empty name: the
-    /// image is only integrated). Reflective images: unused.
+    /// Emissive images: the light the scene was lit by (with `to`: relit;
+    /// alone: integrated, and balanced from it). Reflective images: unused.
     Light from;
     /// Emissive images with `from`: the light to relight to. Reflective
     /// images: the light to render the remittances under (required).
@@ -63,11 +63,12 @@ struct SpectralConversion
 SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int channels,
                                           const SpectralOptions& options);
 
-/// Throws Exception naming `file`, the channel and the pixel when a
-/// spectral value is NaN, infinite or negative.
+/// Throws Exception naming `file`, the channel and the pixel ((x, y) for an
+/// image `width` pixels wide, else its index) when a spectral value is NaN,
+/// infinite or negative.
 void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
                          const std::vector<std::string>& channelNames, const float* pixels,
-                         size_t count, int channels);
+                         size_t count, int channels, int width = 0);
 
 /// RGB (3 floats a pixel) of `count` pixels of `channels` floats each, on
 /// `threads` threads: one SIMD dot product per output channel and pixel.

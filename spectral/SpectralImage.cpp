@@ -472,6 +472,12 @@ SpectralLayout FindSpectralLayout(const std::string& file,
                                    "' read as relative radiance");
         }
     }
+    if (const std::string* ev = attribute("EV"); ev && std::strtod(ev->c_str(), nullptr) != 0.0)
+    {
+        layout.notes.push_back("EV " + OneLine(*ev, 20) +
+                               " (the exposure the image was made at) is noted, not applied: "
+                               "values are integrated as stored");
+    }
     // Buckets or points.
     const bool pbrt = layout.layout == "Fichet 2021" && layout.kind == SpectralKind::EMISSIVE &&
                       (IsPbrtDefaultGrid(layout.wavelengths) ||
@@ -565,7 +571,9 @@ Eigen::Matrix<double, 3, Eigen::Dynamic> SpectralXyzWeights(const SpectralLayout
             "relighting an emissive spectral image needs the light it was lit "
             "by: {src=}LIGHT as well as {dst=}LIGHT");
     }
-    const bool relight = !reflective && !lighting.from.empty();
+    // Emissive with S1 alone: integrated as it is (S1 is only the light the
+    // caller balances from).
+    const bool relight = !reflective && !lighting.from.empty() && !lighting.to.empty();
     // The light each wavelength is seen under: `to` for reflective images;
     // for relit emissive ones `to` over `from`, per cell.
     Eigen::Matrix<double, 3, Eigen::Dynamic> w(3, Eigen::Index(n));

@@ -291,3 +291,20 @@ def test_accuracy_heatmaps_of_a_render(tmp_path):
     assert none.mean() > 3 * brad.mean() > 0
     # The rows name the file.
     assert str(tmp_path / "spec.exr") in p.stdout
+
+
+def test_an_emissive_image_lit_by_a_known_light_is_balanced_from_it(tmp_path):
+    # The white reflector under A, given --from A alone: integrated, then
+    # white-balanced from A's white to ACEScg's, so R = G = B.
+    a = bandlight.illuminant("A")(GRID)
+    white = np.broadcast_to(a, (2, 3, len(GRID))).astype(np.float32)
+    write_exr(tmp_path / "white_A.exr", white, [fichet_name("S0", nm) for nm in GRID])
+    p = run_cli("spectral", tmp_path / "white_A.exr", tmp_path / "w.exr", "--from", "A")
+    assert "integrated, lit by A, balanced (cat02)" in p.stdout
+    rgb = read(tmp_path / "w.exr")[0]
+    np.testing.assert_allclose(rgb, rgb[..., 1:2].repeat(3, axis=-1), rtol=1e-6)
+    # Lit, it keeps A's orange.
+    run_cli("spectral", tmp_path / "white_A.exr", tmp_path / "lit.exr", "--from", "A",
+            "--plates", "lit")
+    lit = read(tmp_path / "lit.exr")[0]
+    assert lit[0, 0, 0] > 1.5 * lit[0, 0, 2]
