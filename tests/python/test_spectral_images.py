@@ -272,9 +272,8 @@ def test_accuracy_on_an_image_of_known_remittances_equals_the_csv(tmp_path):
 
 
 def test_accuracy_heatmaps_of_a_render(tmp_path):
-    run_cli("render", SCENES / "materials_A.yaml", "--mode", "spectral", "--spectra", "-o",
-            tmp_path / "spec.exr")
-    p = run_cli("accuracy", "--image", tmp_path / "spec.exr", "--from", "A", "--to", "D65",
+    run_cli("render", SCENES / "tcs_spectral_F11.yaml", "--spectra", "-o", tmp_path / "spec.exr")
+    p = run_cli("accuracy", "--image", tmp_path / "spec.exr", "--from", "F11", "--to", "D65",
                 "--methods", "none,bradford,rootpoly", "--ideal-only", "--no-cost",
                 "--plates", "lit", "--heatmaps", tmp_path / "maps")
     for m in ("none", "bradford", "rootpoly"):
