@@ -22,23 +22,9 @@ struct ApplyOptions
     RelightOptions relight;
 };
 
-/// Notes as every command prints them; a line per frame on a terminal only
-/// (a farm's log gets the summary).
-class FrameReporter : public CommandReporter
-{
-public:
-    void progress(const std::string& line, double fraction) override
-    {
-        if (fraction < 0.0 || StderrIsTerminal())
-        {
-            CommandReporter::progress(line, fraction);
-        }
-    }
-};
-
 void RunApply(ApplyOptions& o)
 {
-    FrameReporter reporter;
+    FrameSetReporter reporter;
     if (o.request.look.empty() && o.relight.given())
     {
         o.request.relight = o.relight.relight(reporter);
@@ -48,20 +34,13 @@ void RunApply(ApplyOptions& o)
     {
         return;
     }
-    std::cout << "Applied " << r.applied << " to " << r.frames << " frames";
-    if (o.request.skipExisting || o.request.keepGoing)
-    {
-        std::cout << " (" << r.skipped << " skipped, " << r.failed.size() << " failed)";
-    }
-    std::cout << " in " << Fixed(r.seconds, 2) << " s\n";
-    if (!r.failed.empty())
-    {
-        // Exit code 2, and one line: how many, and the first of them.
-        throw Exception(std::to_string(r.failed.size()) + " of " +
-                        std::to_string(r.frames + r.skipped + r.failed.size()) +
-                        " frames failed; the first, frame " + std::to_string(r.failed[0].frame) +
-                        ": " + r.failed[0].error);
-    }
+    jobs::FrameRun run;
+    run.frames = r.frames;
+    run.skipped = r.skipped;
+    run.failed = r.failed;
+    run.seconds = r.seconds;
+    FinishFrameRun("Applied " + r.applied + " to", run,
+                   o.request.skipExisting || o.request.keepGoing);
 }
 
 }  // namespace
@@ -82,16 +61,7 @@ void AddApplyCommand(CLI::App& app)
                     "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
                     "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
-    cmd->add_option("--frames", r.frames,
-                    "Frames for patterns, as farms hand them out: 1001-1100, 1001-1100x2, "
-                    "1001-1010,1020");
-    cmd->add_flag("--skip-existing", r.skipExisting,
-                  "Skip frames whose output exists (outputs are written whole or not at all)");
-    cmd->add_flag("--keep-going", r.keepGoing,
-                  "Go on after a frame fails; at the end name the failed frames and exit 2");
-    cmd->add_option("--threads", r.threads, "Threads (0: all cores; at most 256)")
-        ->check(CLI::Range(0, kMaxThreads))
-        ->capture_default_str();
+    AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
     cmd->callback([o] { RunApply(*o); });
 }
 

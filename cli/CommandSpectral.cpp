@@ -26,7 +26,7 @@ struct SpectralCommandOptions
 
 void RunSpectral(SpectralCommandOptions& o)
 {
-    CommandReporter reporter;
+    FrameSetReporter reporter;
     jobs::SpectralOptions& s = o.request.options;
     if (!o.from.empty())
     {
@@ -51,19 +51,7 @@ void RunSpectral(SpectralCommandOptions& o)
     std::cout << "Read " << r.layout << "; " << r.applied << "\n";
     if (r.run.sequence)
     {
-        std::cout << "Wrote " << r.run.frames << " frames";
-        if (o.request.files.skipExisting || o.request.files.keepGoing)
-        {
-            std::cout << " (" << r.run.skipped << " skipped, " << r.run.failed.size() << " failed)";
-        }
-        std::cout << " in " << Fixed(r.run.seconds, 2) << " s\n";
-    }
-    if (!r.run.failed.empty())
-    {
-        throw Exception(std::to_string(r.run.failed.size()) + " of " +
-                        std::to_string(r.run.frames + r.run.skipped + r.run.failed.size()) +
-                        " frames failed; the first, frame " +
-                        std::to_string(r.run.failed[0].frame) + ": " + r.run.failed[0].error);
+        FinishFrameRun("Wrote", r.run, o.request.files.skipExisting || o.request.files.keepGoing);
     }
 }
 
@@ -111,14 +99,7 @@ void AddSpectralCommand(CLI::App& app)
                     "(means over each channel's interval)")
         ->check(CLI::IsMember({"auto", "points", "buckets"}))
         ->capture_default_str();
-    cmd->add_option("--frames", r.files.frames,
-                    "Frames for patterns: 1001-1100, 1001-1100x2, 1001-1010,1020");
-    cmd->add_flag("--skip-existing", r.files.skipExisting, "Skip frames whose output exists");
-    cmd->add_flag("--keep-going", r.files.keepGoing,
-                  "Go on after a frame fails; at the end name the failed frames and exit 2");
-    cmd->add_option("--threads", r.threads, "Threads (0: all cores; at most 256)")
-        ->check(CLI::Range(0, kMaxThreads))
-        ->capture_default_str();
+    AddFrameSetOptions(*cmd, r.files.frames, r.files.skipExisting, r.files.keepGoing, r.threads);
     cmd->callback([o] { RunSpectral(*o); });
 }
 

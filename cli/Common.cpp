@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/Common.h"
+#include "spectral/Parallel.h"
+
+#include <iostream>
 
 #include "cli/Diagnostics.h"
 
@@ -94,6 +97,46 @@ void AddPlatesOptions(CLI::App& app, jobs::PlatesRequest& o, bool allowBoth)
                    "The light the camera's one fixed IDT was fitted for (rootpoly-camera's "
                    "plates: that IDT plus white-balance gains)")
         ->capture_default_str();
+}
+
+void FrameSetReporter::progress(const std::string& line, double fraction)
+{
+    if (fraction < 0.0 || StderrIsTerminal())
+    {
+        CommandReporter::progress(line, fraction);
+    }
+}
+
+void AddFrameSetOptions(CLI::App& app, std::string& frames, bool& skipExisting, bool& keepGoing,
+                        int& threads)
+{
+    app.add_option("--frames", frames,
+                   "Frames for patterns, as farms hand them out: 1001-1100, 1001-1100x2, "
+                   "1001-1010,1020");
+    app.add_flag("--skip-existing", skipExisting,
+                 "Skip frames whose output exists (outputs are written whole or not at all)");
+    app.add_flag("--keep-going", keepGoing,
+                 "Go on after a frame fails; at the end name the failed frames and exit 2");
+    app.add_option("--threads", threads, "Threads (0: all cores; at most 256)")
+        ->check(CLI::Range(0, kMaxThreads))
+        ->capture_default_str();
+}
+
+void FinishFrameRun(const std::string& verb, const jobs::FrameRun& run, bool counts)
+{
+    std::cout << verb << " " << run.frames << " frames";
+    if (counts)
+    {
+        std::cout << " (" << run.skipped << " skipped, " << run.failed.size() << " failed)";
+    }
+    std::cout << " in " << Fixed(run.seconds, 2) << " s\n";
+    if (!run.failed.empty())
+    {
+        throw Exception(std::to_string(run.failed.size()) + " of " +
+                        std::to_string(run.frames + run.skipped + run.failed.size()) +
+                        " frames failed; the first, frame " + std::to_string(run.failed[0].frame) +
+                        ": " + run.failed[0].error);
+    }
 }
 
 }  // namespace bandlight::cli

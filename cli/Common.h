@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "jobs/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/Exception.h"
 
@@ -24,6 +25,14 @@ class CommandReporter : public jobs::Reporter
 {
 public:
     void note(const std::string& line) override;
+    void progress(const std::string& line, double fraction) override;
+};
+
+/// Notes as every command prints them; a progress line per frame on a
+/// terminal only (a farm's log gets the closing summary).
+class FrameSetReporter : public CommandReporter
+{
+public:
     void progress(const std::string& line, double fraction) override;
 };
 
@@ -55,6 +64,16 @@ struct RelightOptions
 
 /// Adds the options above to a command.
 void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
+
+/// --frames, --skip-existing, --keep-going and --threads, as `apply` and
+/// `spectral` take them.
+void AddFrameSetOptions(CLI::App& app, std::string& frames, bool& skipExisting, bool& keepGoing,
+                        int& threads);
+
+/// After a frame set: "VERB N frames (S skipped, F failed) in T s" on stdout
+/// (the counts when `counts`), and, when frames failed, an Exception (exit
+/// code 2) in one line naming how many and the first of them.
+void FinishFrameRun(const std::string& verb, const jobs::FrameRun& run, bool counts);
 
 /// The --method help: every method name.
 inline std::string MethodHelp()

@@ -10,17 +10,6 @@ namespace bandlight::python
 
 namespace
 {
-std::string PathText(const py::object& arg, const std::string& what)
-{
-    if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
-    {
-        throw py::type_error(
-            what + " is a file (str or os.PathLike), not " +
-            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
-    }
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-}
-
 py::dict Apply(const py::object& input, const py::object& output,
                const std::optional<std::string>& frames, const std::optional<std::string>& look,
                const py::object& config, const std::optional<std::string>& colorspace,

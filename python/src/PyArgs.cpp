@@ -375,4 +375,15 @@ py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& 
     return std::move(a);
 }
 
+std::string PathText(const py::object& arg, const std::string& what)
+{
+    if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
+    {
+        throw py::type_error(
+            what + " is a file (str or os.PathLike), not " +
+            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+    }
+    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+}
+
 }  // namespace bandlight::python

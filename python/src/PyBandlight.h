@@ -206,6 +206,10 @@ BandSet ToBands(const py::handle& arg);
 /// "xyz" or "ebu_rgb" (also "ebu-rgb", "rgb").
 MatchingSet ToMatchingSet(const std::string& text);
 
+/// A file argument (str or os.PathLike) as text; TypeError naming `what`
+/// otherwise.
+std::string PathText(const py::object& arg, const std::string& what);
+
 /// The thread count argument: 0 (all cores) to 256.
 int ToThreads(int threads);
 

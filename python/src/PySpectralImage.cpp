@@ -10,17 +10,6 @@ namespace bandlight::python
 namespace
 {
 
-std::string FileText(const py::object& arg, const std::string& what)
-{
-    if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
-    {
-        throw py::type_error(
-            what + " is a file (str or os.PathLike), not " +
-            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
-    }
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-}
-
 const char* KindName(SpectralKind kind)
 {
     return kind == SpectralKind::EMISSIVE ? "emissive" : "reflective";
@@ -54,7 +43,7 @@ jobs::SpectralOptions Options(const py::object& src, const py::object& dst,
         }
         else
         {
-            o.channelWavelengthsFile = FileText(channels, "channels");
+            o.channelWavelengthsFile = PathText(channels, "channels");
         }
     }
     o.kind = kind;
@@ -69,7 +58,7 @@ py::tuple ReadSpectral(const py::object& path, const py::object& channels, const
     jobs::SpectralOptions o =
         Options(py::none(), py::none(), defaults::WORKING_SPACE, defaults::PLATES,
                 defaults::ADAPTATION, py::str(defaults::OBSERVER), channels, kind, sampling);
-    const std::string file = FileText(path, "path");
+    const std::string file = PathText(path, "path");
     jobs::SpectralImage image = ReadingFile(file, [&] { return jobs::ReadSpectralImage(file, o); });
     const size_t n = image.layout.wavelengths.size();
     std::vector<float> spectra = image.spectra();
@@ -144,8 +133,8 @@ py::dict Spectral(const py::object& input, const py::object& output,
                   int threads, bool skipExisting, bool keepGoing)
 {
     jobs::SpectralRequest r;
-    r.files.input = FileText(input, "input");
-    r.files.output = FileText(output, "output");
+    r.files.input = PathText(input, "input");
+    r.files.output = PathText(output, "output");
     r.files.frames = frames.value_or("");
     r.files.skipExisting = skipExisting;
     r.files.keepGoing = keepGoing;
