@@ -12,6 +12,7 @@
 
 #include "jobs/Gnuplot.h"
 #include "jobs/detail/AccuracySummary.h"
+#include "jobs/detail/PlotLabels.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
@@ -24,77 +25,163 @@ namespace
 namespace OCIO = OCIO_NAMESPACE;
 using namespace detail;
 
-/// Accuracy (the held-out test colours, as shipped, at the worst exposure,
-/// first plate convention) against cost, with the Pareto front joined.
+/// A method's native cost (the map itself, no LUT) on all threads, or on
+/// one when that is all the cost rows hold; 0 when it has none.
+double NativeCost(const std::vector<CostRow>& cost, const std::string& method)
+{
+    double ns = 0.0;
+    int threads = 0;
+    for (const CostRow& c : cost)
+    {
+        if (c.method == method && c.form == "native" && c.threads > threads)
+        {
+            ns = c.nsPerPixel;
+            threads = c.threads;
+        }
+    }
+    return ns;
+}
+
+/// Accuracy against cost: one series per reflectance set (its mean over
+/// every pair at its worst exposure, as shipped, first plate convention),
+/// the native root polynomials beside their LUTs, the Pareto front of the
+/// held-out set (or the first set) joined, and one label per method placed
+/// where no label overlaps another (PlaceLabels).
 void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outputs)
 {
     const AccuracyOptions& options = result.options;
-    const std::string setName = HeldOutTcs().name;
     const std::string key = options.plates.front().key();
     const bool anyShipped = bool(options.shipped);
     struct Point
     {
         std::string name;
-        double ns, de;
+        double ns;
+        std::vector<double> de;  ///< one per set
     };
     std::vector<Point> pts;
-    const bool hasSet = std::any_of(options.sets.begin(), options.sets.end(),
-                                    [&](const ReflectanceSet& s) { return s.name == setName; });
-    for (const std::string& m : hasSet ? options.methods : std::vector<std::string>{})
+    for (const std::string& m : options.methods)
     {
         if (m == "rootpoly-camera" || m == "rootpoly3-camera" || !result.costAllThreads.count(m))
         {
             continue;
         }
-        const Filter shippedF{1.0, anyShipped && m != "spectral", key, "cie"};
-        const auto worst = WorstExposure(result.rows, m, setName, shippedF, options.exposures);
-        pts.push_back({m, std::max(result.costAllThreads.at(m), 1e-3), worst.second});
+        Point p{m, std::max(result.costAllThreads.at(m), 1e-3), {}};
+        const double native = NativeCost(result.cost, m);
+        Point n{m + " (native)", std::max(native, 1e-3), {}};
+        for (const ReflectanceSet& set : options.sets)
+        {
+            const Filter shippedF{1.0, anyShipped && m != "spectral", key, "cie"};
+            p.de.push_back(
+                WorstExposure(result.rows, m, set.name, shippedF, options.exposures).second);
+            // The native map is the ideal form itself.
+            const Filter idealF{1.0, false, key, "cie"};
+            n.de.push_back(
+                WorstExposure(result.rows, m, set.name, idealF, options.exposures).second);
+        }
+        pts.push_back(p);
+        if (native > 0.0)
+        {
+            pts.push_back(n);
+        }
     }
     std::sort(pts.begin(), pts.end(),
               [](const Point& a, const Point& b)
               { return a.ns < b.ns || (a.ns == b.ns && a.de < b.de); });
-    // Labels of methods at the same cost alternate right and left of their points.
+    // The set the labels and the Pareto front follow.
+    size_t anchor = 0;
+    for (size_t s = 0; s < options.sets.size(); ++s)
+    {
+        anchor = options.sets[s].name == HeldOutTcs().name ? s : anchor;
+    }
+    std::vector<PlotPoint> plotted;
+    for (const Point& p : pts)
+    {
+        plotted.push_back({p.name, p.ns, p.de});
+    }
+    const PlotLayout layout = LayOutAccuracyPlot(plotted, anchor);
+    const std::vector<LabelRequest>& requests = layout.requests;
+    const std::vector<LabelBox>& boxes = layout.boxes;
+    const double xMin = layout.xMin, xMax = layout.xMax, yMax = layout.yMax;
     std::ostringstream data;
+    data.precision(9);
+    // index s: set s's points.
+    for (size_t s = 0; s < options.sets.size(); ++s)
+    {
+        for (const Point& p : pts)
+        {
+            data << p.ns << " " << p.de[s] << "\n";
+        }
+        data << "\n\n";
+    }
+    // Then the labels (x, y, text) at their boxes' left middles.
+    const auto toX = [&](double f) { return layout.toX(f); };
     for (size_t i = 0; i < pts.size(); ++i)
     {
-        size_t rank = 0;
-        for (size_t k = 0; k < i; ++k)
-        {
-            rank += pts[k].ns == pts[i].ns ? 1 : 0;
-        }
-        data << pts[i].ns << " " << pts[i].de << " " << GnuplotDataLabel(pts[i].name) << " "
-             << (rank % 2 ? -1 : 1) << "\n";
+        data << toX(boxes[i].left) << " " << (boxes[i].bottom + boxes[i].height / 2) * yMax << " "
+             << GnuplotDataLabel(pts[i].name) << "\n";
     }
     data << "\n\n";
+    // Then a leader line from each moved label's point to its box.
+    bool anyLeader = false;
+    for (size_t i = 0; i < pts.size(); ++i)
+    {
+        const LabelRequest& r = requests[i];
+        const LabelBox& b = boxes[i];
+        if (r.y >= b.bottom && r.y <= b.top())
+        {
+            continue;
+        }
+        anyLeader = true;
+        const double edge = b.left >= r.x ? b.left : b.right();
+        data << pts[i].ns << " " << r.y * yMax << "\n"
+             << toX(edge) << " " << (b.bottom + b.height / 2) * yMax << "\n\n";
+    }
+    if (!anyLeader)
+    {
+        data << xMax << " " << 0.0 << "\n";  // an empty index would stop gnuplot
+    }
+    data << "\n\n";
+    // Then the Pareto front of the anchor set.
     double best = 1e30;
     for (const Point& p : pts)
     {
-        if (p.de < best)
+        if (!p.de.empty() && p.de[anchor] < best)
         {
-            best = p.de;
-            data << p.ns << " " << p.de << "\n";
+            best = p.de[anchor];
+            data << p.ns << " " << best << "\n";
         }
     }
-    const std::string script = "set title " +
-                               GnuplotQuote("What accuracy costs: re-lighting " + setName +
-                                            ", as shipped, at its worst exposure (2^-8 ... 2^4), "
-                                            "mean over every illuminant pair") +
-                               "\n"
-                               "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
-                               "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
-                               "set logscale x\nset grid\nset key top right\nset yrange [0:*]\n"
-                               "set offsets graph 0.1, graph 0.1, graph 0.08, 0\n"
-                               "plot $bandlight_data index 1 using 1:2 with lines lw 2 lc rgb "
-                               "'#2a7ab0' title 'Pareto front', \\\n"
-                               "     $bandlight_data index 0 using 1:2 with points pt 7 ps 1.4 lc "
-                               "rgb '#c0392b' notitle, \\\n"
-                               "     $bandlight_data index 0 using 1:($4 > 0 ? $2 : 1/0):3 with "
-                               "labels left offset char 1,0 "
-                               "font ',10' notitle, \\\n"
-                               "     $bandlight_data index 0 using 1:($4 < 0 ? $2 : 1/0):3 with "
-                               "labels right offset char -1,0 "
-                               "font ',10' notitle\n";
-    RunGnuplot(script, data.str(), path, &outputs);
+    const size_t labels = options.sets.size(), leaders = labels + 1, front = labels + 2;
+    std::ostringstream script;
+    script.precision(9);
+    script << "set title "
+           << GnuplotQuote(
+                  "What accuracy costs: each set re-lit as shipped, at its worst exposure "
+                  "(2^-8 ... 2^4), mean over the pairs")
+           << "\n"
+              "set xlabel 'cost, ns per pixel (all threads, log scale)'\n"
+              "set ylabel 'mean CIEDE2000 against the spectral answer'\n"
+              "set logscale x\nset grid\n"
+              "set key outside right top\n"
+           << "set lmargin at screen " << kPlotLeft << "\nset rmargin at screen " << kPlotRight
+           << "\nset bmargin at screen " << kPlotBottom << "\nset tmargin at screen " << kPlotTop
+           << "\nset xrange [" << xMin << ":" << xMax << "]\nset yrange [0:" << yMax << "]\n"
+           << "plot $bandlight_data index " << front
+           << " using 1:2 with lines lw 2 lc rgb '#2a7ab0' title "
+           << GnuplotQuote("Pareto front, " +
+                           (options.sets.empty() ? std::string() : options.sets[anchor].name))
+           << ", \\\n     $bandlight_data index " << leaders
+           << " using 1:2 with lines lw 1 lc rgb '#888888' notitle";
+    const char* colours[] = {"#c0392b", "#27ae60", "#8e44ad", "#d35400", "#16a085", "#2c3e50"};
+    for (size_t s = 0; s < options.sets.size(); ++s)
+    {
+        script << ", \\\n     $bandlight_data index " << s << " using 1:2 with points pt "
+               << (5 + 2 * int(s % 4)) << " ps 1.3 lc rgb '" << colours[s % 6] << "' title "
+               << GnuplotQuote(options.sets[s].name);
+    }
+    script << ", \\\n     $bandlight_data index " << labels
+           << " using 1:2:3 with labels left font ',10' notitle\n";
+    RunGnuplot(script.str(), data.str(), path, &outputs);
 }
 
 /// Each method's cost as one would apply it to an image (all threads): its

@@ -131,10 +131,13 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
         }
         if (!method.isLinear())
         {
-            const Relighter direct(L("A"), L("D65"), method, ws);
             const long n = std::min<long>(pixels, 20000);
             for (int threads : {1, AllThreads()})
             {
+                // A Relighter of its own for each timing: upsample's fits are
+                // shared by the live Relighters of one source light, and a
+                // timing must not reuse the previous one's.
+                const Relighter direct(L("A"), L("D65"), method, ws);
                 std::vector<float> px(size_t(n) * 3);
                 const double s = BestSeconds(
                     [&]
@@ -165,9 +168,10 @@ std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)
                      { IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("fit3x3"), ws); })});
     out.push_back({"rootpoly: fitting one pair (205 training remittances)",
                    BestSeconds([&] { Relighter(L("A"), L("D65"), ParseMethod("rootpoly"), ws); })});
-    const Relighter up(L("A"), L("D65"), ParseMethod("upsample"), ws);
     for (int size : {17, 33, 65})
     {
+        // Fresh fits for each size (see MeasureCost).
+        const Relighter up(L("A"), L("D65"), ParseMethod("upsample"), ws);
         out.push_back({"upsample: baking a " + std::to_string(size) + "^3 LUT, all threads",
                        BestSeconds(
                            [&]

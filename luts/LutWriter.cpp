@@ -35,8 +35,16 @@ void Apply(const OCIO::ConstTransformRcPtr& t, std::vector<float>& rgb)
     OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
     OCIO::ConstCPUProcessorRcPtr cpu = raw->getProcessor(t)->getOptimizedCPUProcessor(
         OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
-    OCIO::PackedImageDesc desc(rgb.data(), long(rgb.size() / 3), 1, 3);
-    cpu->apply(desc);
+    // In rows of at most 4096 pixels: OCIO allocates (and zeroes) scratch
+    // buffers as wide as the row for every apply, which for a 65^3 lattice
+    // as one row cost more than the transform.
+    const size_t pixels = rgb.size() / 3, row = 4096;
+    for (size_t begin = 0; begin < pixels; begin += row)
+    {
+        OCIO::PackedImageDesc desc(rgb.data() + 3 * begin, long(std::min(row, pixels - begin)), 1,
+                                   3);
+        cpu->apply(desc);
+    }
 }
 
 void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const std::string& path,

@@ -11,6 +11,7 @@
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
+#include "transforms/Upsampler.h"
 
 namespace bandlight
 {
@@ -211,6 +212,19 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
         for (const NamedSpectrum& r : o.sets[s].samples)
         {
             samples[s].push_back(SurfaceRenderer::Sample(r.spectrum));
+        }
+    }
+    // upsample's fits under each source light, held for the whole run: every
+    // target light, plate convention and form (ideal, and the shipped
+    // lattice's nodes) shares them.
+    std::vector<std::shared_ptr<UpsampleFits>> fits;
+    if (std::any_of(methods.begin(), methods.end(),
+                    [](const MethodSpec& m) { return m.method == ChangeMethod::UPSAMPLE; }))
+    {
+        for (const Light& light : o.lights)
+        {
+            fits.push_back(
+                UpsampleFits::ForSource(SurfaceRenderer(light.spectrum, working, o.observer)));
         }
     }
     const Spectrum daylight = !o.camera            ? Spectrum()

@@ -219,8 +219,11 @@ struct Relighter::Spectral
     SurfaceRenderer from;
     SurfaceRenderer to;
     Upsampler upsampler;
+    /// The fits under `from`, shared with every Relighter from that light.
+    std::shared_ptr<UpsampleFits> fits;
 
-    Spectral(const SurfaceRenderer& f, const SurfaceRenderer& t) : from(f), to(t), upsampler(from)
+    Spectral(const SurfaceRenderer& f, const SurfaceRenderer& t)
+        : from(f), to(t), upsampler(from), fits(UpsampleFits::ForSource(from))
     {
     }
 };
@@ -359,15 +362,12 @@ void Relighter::apply(Vec3* rgb, size_t count) const
         }
         return;
     }
-    // No warm start between pixels: each fit starts alike, so a colour's
-    // result does not depend on its neighbours.
-    UpsampleCache cache;
+    UpsampleRendered rendered;
     for (size_t i = 0; i < count; ++i)
     {
         const Vec3 guarded = GuardPixel(rgb[i]);
         const Vec3 in = m_hasPre ? Vec3(m_pre * guarded) : guarded;
-        const Vec3 out =
-            UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in, nullptr, &cache);
+        const Vec3 out = UpsampleRelight(*m_spectral->fits, m_spectral->to, m_matrix, in, rendered);
         rgb[i] = m_hasPost ? Vec3(m_post * out) : out;
     }
 }
@@ -475,8 +475,10 @@ void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
     }
     auto run = [&](size_t begin, size_t end)
     {
-        Upsampler::Coeffs warm = Upsampler::Coeffs::Zero();
-        UpsampleCache cache;
+        // Fits are shared (per chromaticity, across targets and threads)
+        // and start from the flat grey: a pixel's result depends on nothing
+        // but the pixel.
+        UpsampleRendered rendered;
         for (size_t i = begin; i < end; ++i)
         {
             float* p = rgb + 3 * i;
@@ -488,8 +490,7 @@ void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
             }
             else
             {
-                out = UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in, &warm,
-                                      &cache);
+                out = UpsampleRelight(*m_spectral->fits, m_spectral->to, m_matrix, in, rendered);
                 if (m_hasPost)
                 {
                     out = m_post * out;

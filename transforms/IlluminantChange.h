@@ -158,9 +158,10 @@ public:
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
     Vec3 apply(const Vec3& rgb) const;
     /// `count` interleaved RGB float triples in place, on `threads` threads
-    /// (0: all cores), neighbours warm-starting each other's fits. The 3×3
-    /// and rootpoly run in float through the SIMD kernels
-    /// (transforms/PixelKernels.h), upsample per pixel in double.
+    /// (0: all cores); upsample's fits are shared with every Relighter from
+    /// the same light (UpsampleFits), so a pixel's result depends only on
+    /// the pixel. The 3×3 and rootpoly run in float through the SIMD
+    /// kernels (transforms/PixelKernels.h), upsample per pixel in double.
     void apply(float* rgb, size_t count, int threads = 0) const;
     /// The same on pixels of `stride` floats (3: RGB, 4: RGBA; R, G, B
     /// first, other channels unchanged).

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <shared_mutex>
 #include <unordered_map>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -56,19 +59,79 @@ public:
 
 private:
     const SurfaceRenderer& m_from;
+    /// The renderer's matrix transposed: each channel's weights contiguous.
+    Eigen::Matrix<double, SurfaceRenderer::kSamples, 3> m_rows;
 };
 
-/// Fits already made for colours at the canonical level (see gamutScale),
-/// keyed by the scaled colour quantised to 2^-20 of the white: all pixels
-/// of one chromaticity share a fit. One per thread.
-using UpsampleCache = std::unordered_map<uint64_t, Upsampler::Coeffs>;
+/// upsample's fits for one source light, shared by every Relighter whose
+/// source renderer (S1, working space, observer) is the same. A fit depends
+/// only on the source light and the pixel's chromaticity: every pixel is
+/// fitted at the canonical level (see gamutScale), so all the nodes of a
+/// log lattice's ray through black, every target light and both plate
+/// conventions (whose input matrices lead back to the colour under S1)
+/// share it. Keyed by the scaled colour quantised to 2^-19 of the white,
+/// each entry is the fit of its key's own colour from the flat grey, a pure
+/// function of the key: results never depend on which pixel, thread or
+/// target asked first. Thread safe; at most kMaxEntries are kept (further
+/// fits are made and not stored), so a store serving images stays bounded.
+class UpsampleFits
+{
+public:
+    static constexpr size_t kMaxEntries = size_t(1) << 18;
 
-/// `upsample` for one pixel: scale into the gamut, fit under S1, render
-/// the remittance under S2, scale back. Pixels with no positive channel go
-/// through `fallback` (a linear 3×3: black and negative noise have no
-/// remittance). `warm` carries coefficients between neighbouring pixels.
+    /// The store of `from`'s source light: the one every live user of that
+    /// light holds, or a new one. It lives while anyone holds it.
+    static std::shared_ptr<UpsampleFits> ForSource(const SurfaceRenderer& from);
+
+    explicit UpsampleFits(const SurfaceRenderer& from);
+    UpsampleFits(const UpsampleFits&) = delete;
+    UpsampleFits& operator=(const UpsampleFits&) = delete;
+
+    /// The key of a colour already scaled to the canonical level; false
+    /// when a channel lies beyond ±1 of the white (the key cannot hold it).
+    bool key(const Vec3& scaled, uint64_t& key) const noexcept;
+    /// The fit of a key's colour, made now or earlier.
+    Upsampler::Coeffs coeffs(uint64_t key);
+
+    const Upsampler& upsampler() const noexcept { return m_up; }
+    bool sameSource(const SurfaceRenderer& from) const noexcept;
+    size_t size() const;
+
+private:
+    SurfaceRenderer m_from;
+    Upsampler m_up;
+    mutable std::shared_mutex m_mutex;
+    std::unordered_map<uint64_t, Upsampler::Coeffs> m_fits;
+};
+
+/// One target's relit colours at the canonical level by UpsampleFits key:
+/// the remittance is rendered once per chromaticity. One per thread. An
+/// open-addressing table (a lattice bake looks up every node), keys never 0
+/// (a key's largest channel is at the canonical level, above zero).
+class UpsampleRendered
+{
+public:
+    const Vec3* find(uint64_t key) const noexcept;
+    void insert(uint64_t key, const Vec3& value);
+
+private:
+    size_t slot(uint64_t key) const noexcept;
+    std::vector<uint64_t> m_keys;
+    std::vector<Vec3> m_values;
+    size_t m_size = 0;
+    int m_bits = 0;
+};
+
+/// `upsample` for one pixel: scale into the gamut, fit under S1 (from the
+/// flat grey), render the remittance under S2, scale back. Pixels with no
+/// positive channel go through `fallback` (a linear 3×3: black and negative
+/// noise have no remittance).
 Vec3 UpsampleRelight(const Upsampler& up, const SurfaceRenderer& to, const Mat3& fallback,
-                     const Vec3& rgb, Upsampler::Coeffs* warm = nullptr,
-                     UpsampleCache* cache = nullptr);
+                     const Vec3& rgb);
+
+/// The same through shared fits: the pixel's chromaticity is fitted once
+/// in `fits` (its key's colour) and rendered once per target in `rendered`.
+Vec3 UpsampleRelight(UpsampleFits& fits, const SurfaceRenderer& to, const Mat3& fallback,
+                     const Vec3& rgb, UpsampleRendered& rendered);
 
 }  // namespace bandlight

@@ -3,6 +3,10 @@
 
 #include "transforms/LitMethod.h"
 
+#include <cmath>
+#include <memory>
+#include <vector>
+
 #include <Eigen/LU>
 
 #include "spectral/Exception.h"
@@ -117,6 +121,60 @@ TEST_CASE("upsample keeps white, scales HDR and never makes NaN", "[transforms][
                             Vec3(1e-6, 0, 0), Vec3(5.0, 0.0, 0.0)})
     {
         CHECK(relight.apply(odd).allFinite());
+    }
+}
+
+TEST_CASE("upsample fits a chromaticity once per source light, whoever asks",
+          "[transforms][methods]")
+{
+    // Colours at several exposures, in and out of gamut.
+    const int n = 4000;
+    std::vector<float> pixels;
+    for (int i = 0; i < n; ++i)
+    {
+        const float k = std::ldexp(1.0f, i % 9 - 6);
+        pixels.insert(pixels.end(), {k * float(1 + i % 7) / 7.0f, k * float(1 + i % 11) / 11.0f,
+                                     k * float(1 + i % 13) / 13.0f});
+    }
+    const SurfaceRenderer underA(BuiltinIlluminant("A"), Working());
+    std::vector<float> one = pixels;
+    {
+        const Relighter toD65(L("A"), L("D65"), ParseMethod("upsample"), Working());
+        const std::shared_ptr<UpsampleFits> fits = UpsampleFits::ForSource(underA);
+        CHECK(fits->size() == 0);
+        toD65.apply(one.data(), size_t(n), 1);
+        const size_t fitted = fits->size();
+        CHECK(fitted > 100);
+        CHECK(fitted < size_t(n) / 4);  // the exposures of one colour share a fit
+        // On two threads, through the filled store: bit for bit the same.
+        std::vector<float> two = pixels;
+        toD65.apply(two.data(), size_t(n), 2);
+        CHECK(one == two);
+        // Another target from A fits nothing new; another source has its own.
+        const Relighter toF2(L("A"), L("F2"), ParseMethod("upsample"), Working());
+        std::vector<float> f2 = pixels;
+        toF2.apply(f2.data(), size_t(n), 1);
+        CHECK(fits->size() == fitted);
+        const Relighter fromD65(L("D65"), L("A"), ParseMethod("upsample"), Working());
+        CHECK(UpsampleFits::ForSource(SurfaceRenderer(BuiltinIlluminant("D65"), Working())) !=
+              fits);
+    }
+    // With every user gone the store is freed; a new one fitted in the
+    // reverse order gives the same pixels.
+    const Relighter again(L("A"), L("D65"), ParseMethod("upsample"), Working());
+    CHECK(UpsampleFits::ForSource(underA)->size() == 0);
+    std::vector<float> reversed;
+    for (int i = n - 1; i >= 0; --i)
+    {
+        reversed.insert(reversed.end(), pixels.begin() + 3 * i, pixels.begin() + 3 * i + 3);
+    }
+    again.apply(reversed.data(), size_t(n), 1);
+    for (int i = 0; i < n; ++i)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            CHECK(reversed[size_t(3 * (n - 1 - i) + c)] == one[size_t(3 * i + c)]);
+        }
     }
 }
 
