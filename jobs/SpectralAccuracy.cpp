@@ -157,9 +157,9 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
     std::set<std::vector<float>> seen;
     const std::vector<float> spectra = image.spectra();
     int lost = 0;
-    for (size_t y = 0; y < size_t(image.height); y += step)
+    for (size_t y = 0; y < size_t(image.height) && set.samples.size() < maxSamples; y += step)
     {
-        for (size_t x = 0; x < size_t(image.width); x += step)
+        for (size_t x = 0; x < size_t(image.width) && set.samples.size() < maxSamples; x += step)
         {
             const size_t p = y * size_t(image.width) + x;
             std::vector<float> s(spectra.begin() + long(p * n),
@@ -177,10 +177,6 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
             }
             set.samples.push_back(
                 {std::to_string(x) + "," + std::to_string(y), OnGrid(layout.wavelengths, beta)});
-            if (set.samples.size() >= maxSamples)
-            {
-                break;
-            }
         }
     }
     if (set.samples.empty())

@@ -58,17 +58,8 @@ py::dict Apply(const py::object& input, const py::object& output,
         py::gil_scoped_release release;
         result = jobs::ApplyImages(r, Warnings());
     }
-    py::dict d;
+    py::dict d = FrameRunDict(result.frames, result.skipped, result.failed, result.seconds);
     d["applied"] = result.applied;
-    d["frames"] = result.frames;
-    d["skipped"] = result.skipped;
-    py::list failed;
-    for (const jobs::FrameFailure& f : result.failed)
-    {
-        failed.append(py::make_tuple(f.frame, f.error));
-    }
-    d["failed"] = failed;
-    d["seconds"] = result.seconds;
     return d;
 }
 }  // namespace

@@ -386,4 +386,20 @@ std::string PathText(const py::object& arg, const std::string& what)
     return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
 }
 
+py::dict FrameRunDict(size_t frames, size_t skipped, const std::vector<jobs::FrameFailure>& failed,
+                      double seconds)
+{
+    py::dict d;
+    d["frames"] = frames;
+    d["skipped"] = skipped;
+    py::list list;
+    for (const jobs::FrameFailure& f : failed)
+    {
+        list.append(py::make_tuple(f.frame, f.error));
+    }
+    d["failed"] = list;
+    d["seconds"] = seconds;
+    return d;
+}
+
 }  // namespace bandlight::python

@@ -19,6 +19,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "jobs/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
@@ -209,6 +210,11 @@ MatchingSet ToMatchingSet(const std::string& text);
 /// A file argument (str or os.PathLike) as text; TypeError naming `what`
 /// otherwise.
 std::string PathText(const py::object& arg, const std::string& what);
+
+/// A frame set's summary: {"frames", "skipped", "failed": [(frame, error)],
+/// "seconds"}.
+py::dict FrameRunDict(size_t frames, size_t skipped, const std::vector<jobs::FrameFailure>& failed,
+                      double seconds);
 
 /// The thread count argument: 0 (all cores) to 256.
 int ToThreads(int threads);

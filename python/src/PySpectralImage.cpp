@@ -145,18 +145,10 @@ py::dict Spectral(const py::object& input, const py::object& output,
         py::gil_scoped_release release;
         result = jobs::ConvertSpectralImages(r, Warnings());
     }
-    py::dict d;
+    py::dict d =
+        FrameRunDict(result.run.frames, result.run.skipped, result.run.failed, result.run.seconds);
     d["layout"] = result.layout;
     d["applied"] = result.applied;
-    d["frames"] = result.run.frames;
-    d["skipped"] = result.run.skipped;
-    py::list failed;
-    for (const jobs::FrameFailure& f : result.run.failed)
-    {
-        failed.append(py::make_tuple(f.frame, f.error));
-    }
-    d["failed"] = failed;
-    d["seconds"] = result.run.seconds;
     return d;
 }
 

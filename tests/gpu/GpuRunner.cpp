@@ -280,6 +280,21 @@ Context* ContextFor(OCIO::GpuLanguage language, std::string* why)
     return &c;
 }
 
+/// Throws naming `what` and the driver's log when `program` did not link
+/// (the program is deleted).
+void CheckLinked(GLuint program, const char* what)
+{
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok)
+    {
+        char log[8192] = {};
+        glGetProgramInfoLog(program, sizeof log, nullptr, log);
+        glDeleteProgram(program);
+        throw std::runtime_error(std::string(what) + " does not link: " + log);
+    }
+}
+
 GLuint CompileStage(GLenum stage, const std::string& text)
 {
     const GLuint s = glCreateShader(stage);
@@ -326,15 +341,7 @@ GLuint Program(Context& c, const Wrapper& w, const std::string& fragment)
     glLinkProgram(program);
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok)
-    {
-        char log[8192] = {};
-        glGetProgramInfoLog(program, sizeof log, nullptr, log);
-        glDeleteProgram(program);
-        throw std::runtime_error(std::string("shader program does not link: ") + log);
-    }
+    CheckLinked(program, "shader program");
     c.programs.emplace(fragment, program);
     return program;
 }
@@ -659,15 +666,7 @@ std::vector<float> GpuRunner::RunCompute(const OCIO::ConstGPUProcessorRcPtr& pro
         glAttachShader(program, cs);
         glLinkProgram(program);
         glDeleteShader(cs);
-        GLint ok = 0;
-        glGetProgramiv(program, GL_LINK_STATUS, &ok);
-        if (!ok)
-        {
-            char log[8192] = {};
-            glGetProgramInfoLog(program, sizeof log, nullptr, log);
-            glDeleteProgram(program);
-            throw std::runtime_error(std::string("compute program does not link: ") + log);
-        }
+        CheckLinked(program, "compute program");
         c->programs.emplace(text, program);
     }
     glUseProgram(program);
