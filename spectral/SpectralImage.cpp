@@ -496,6 +496,14 @@ SpectralLayout FindSpectralLayout(const std::string& file,
         for (const Found& f : found)
         {
             const auto& e = bandEdges.at(channelNames[size_t(f.channel)]);
+            if (!(e.first < e.second) || !std::isfinite(e.first) || !std::isfinite(e.second))
+            {
+                throw Exception(In(file) + "bandlight:bands lists band '" +
+                                OneLine(channelNames[size_t(f.channel)], 80) + "' as " +
+                                OneLine(std::to_string(e.first), 20) + "-" +
+                                OneLine(std::to_string(e.second), 20) +
+                                " nm: not an interval of increasing wavelengths");
+            }
             bucketEdges.push_back(e);
         }
         layout.edges.push_back(bucketEdges.front().first);

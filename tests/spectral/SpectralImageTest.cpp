@@ -146,6 +146,9 @@ TEST_CASE("Spectral layouts find their channels in any order and their sampling"
         "b.exr", {"B", "G", "R"}, {{"bandlight:bands", "B 400-500,G 500-600,R 600-700"}});
     CHECK(bands.sampling == SpectralSampling::BUCKETS);
     CHECK(bands.edges == std::vector<double>{400.0, 500.0, 600.0, 700.0});
+    CHECK_THROWS_WITH(FindSpectralLayout("b.exr", {"B", "G", "R"},
+                                         {{"bandlight:bands", "B 728-500,G 500-600,R 600-700"}}),
+                      Contains("lists band 'B' as 728.000000-500.000000 nm: not an interval"));
     CHECK_THROWS_WITH(FindSpectralLayout("b.exr", {"B", "G"},
                                          {{"bandlight:bands", "B 400-500,G 500-600,R 600-700"}}),
                       Contains("lists 3 bands but the image has 2"));
