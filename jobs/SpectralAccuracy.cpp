@@ -15,6 +15,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"
+#include "spectral/SpectrumIO.h"
 #include "transforms/Accuracy.h"
 #include "transforms/Methods.h"
 #include "transforms/Plates.h"
@@ -24,43 +25,6 @@ namespace bandlight::jobs
 
 namespace
 {
-
-/// Values on the layout's wavelengths as a Spectrum: on its own grid when
-/// regular, else resampled linearly onto the smallest step.
-Spectrum OnGrid(const std::vector<double>& w, const std::vector<double>& v)
-{
-    double minStep = w[1] - w[0];
-    for (size_t i = 1; i < w.size(); ++i)
-    {
-        minStep = std::min(minStep, w[i] - w[i - 1]);
-    }
-    const double span = w.back() - w.front();
-    bool regular = true;
-    for (size_t i = 0; i < w.size(); ++i)
-    {
-        regular =
-            regular &&
-            std::abs(w[i] - (w.front() + span * double(i) / double(w.size() - 1))) < 1e-6 * minStep;
-    }
-    if (regular)
-    {
-        return Spectrum(w.front(), span / double(w.size() - 1), v);
-    }
-    const size_t count = size_t(std::floor(span / minStep + 1e-9)) + 1;
-    std::vector<double> out(count);
-    size_t j = 0;
-    for (size_t k = 0; k < count; ++k)
-    {
-        const double l = w.front() + minStep * double(k);
-        while (j + 2 < w.size() && w[j + 1] < l)
-        {
-            ++j;
-        }
-        const double t = std::clamp((l - w[j]) / (w[j + 1] - w[j]), 0.0, 1.0);
-        out[k] = v[j] + t * (v[j + 1] - v[j]);
-    }
-    return Spectrum(w.front(), minStep, out);
-}
 
 /// Emissive images: 1 / the 99.9th percentile of Y relative to a white
 /// reflector under `from`; reflective images: 1.
@@ -175,8 +139,8 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
                 beta[i] = light[i] > 0.0 ? double(s[i]) / light[i] * scale : 0.0;
                 lost += light[i] > 0.0 || s[i] == 0.0f ? 0 : 1;
             }
-            set.samples.push_back(
-                {std::to_string(x) + "," + std::to_string(y), OnGrid(layout.wavelengths, beta)});
+            set.samples.push_back({std::to_string(x) + "," + std::to_string(y),
+                                   SpectrumFromSamples(layout.wavelengths, beta, path)});
         }
     }
     if (set.samples.empty())

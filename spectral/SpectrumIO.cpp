@@ -124,11 +124,13 @@ void CheckGrid(double first, double last, double step, const std::string& source
     }
 }
 
+}  // namespace
+
 /// Builds a regular-grid spectrum from increasing (wavelength, value)
 /// pairs; an irregular grid is resampled onto its smallest step, which must
 /// not need more than MAX_SPECTRUM_SAMPLES samples.
-Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v,
-                     const std::string& source, size_t lastLine)
+Spectrum SpectrumFromSamples(const std::vector<double>& wl, const std::vector<double>& v,
+                             const std::string& source, size_t lastLine)
 {
     if (wl.size() == 1)
     {
@@ -164,8 +166,6 @@ Spectrum FromSamples(const std::vector<double>& wl, const std::vector<double>& v
     }
     return Spectrum(wl.front(), minStep, std::move(out));
 }
-
-}  // namespace
 
 std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& source)
 {
@@ -235,7 +235,7 @@ std::vector<NamedSpectrum> ReadCsvSpectra(std::istream& in, const std::string& s
     std::vector<NamedSpectrum> out;
     for (size_t c = 0; c < columns.size(); ++c)
     {
-        out.push_back({names[c], FromSamples(wl, columns[c], source, lineNo)});
+        out.push_back({names[c], SpectrumFromSamples(wl, columns[c], source, lineNo)});
     }
     return out;
 }

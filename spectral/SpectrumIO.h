@@ -24,6 +24,15 @@ struct NamedSpectrum
     Spectrum spectrum;
 };
 
+/// Builds a regular-grid spectrum from increasing (wavelength, value)
+/// pairs; an irregular grid is resampled linearly onto its smallest step.
+/// Throws Exception naming `source` (and `line`, when not 0) when the grid
+/// would need more than MAX_SPECTRUM_SAMPLES samples or leaves the range
+/// bandlight reads.
+Spectrum SpectrumFromSamples(const std::vector<double>& wavelengths,
+                             const std::vector<double>& values, const std::string& source,
+                             size_t line = 0);
+
 /// Reads spectra from CSV text: optional '#' comment lines, an optional
 /// header row (first column the wavelength in nm, then one name per
 /// spectrum), then rows "wavelength, v1, v2, ..." separated by commas,
