@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -26,11 +28,53 @@ inline int ThreadCount(int requested, size_t work)
     return std::max(n, 1);
 }
 
+namespace detail
+{
+
+/// Keeps the first exception thrown on any thread of a parallel loop, so the
+/// loop joins every thread and rethrows it on the calling one: an exception
+/// leaving a std::thread, or a joinable thread destroyed while one
+/// propagates, would abort the process instead of reporting the error.
+class FirstException
+{
+public:
+    template <typename Fn>
+    void run(Fn&& fn) noexcept
+    {
+        try
+        {
+            fn();
+        }
+        catch (...)
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            if (!m_error)
+            {
+                m_error = std::current_exception();
+            }
+        }
+    }
+    void rethrow() const
+    {
+        if (m_error)
+        {
+            std::rethrow_exception(m_error);
+        }
+    }
+
+private:
+    std::mutex m_mutex;
+    std::exception_ptr m_error;
+};
+
+}  // namespace detail
+
 /// Splits [0, count) into one contiguous range per thread and calls
 /// `fn(begin, end)` for each, the last range on the calling thread. When
 /// the system refuses a thread (std::system_error: resource limits), the
 /// ranges it would have run are run on the calling thread instead: the
-/// result is the same, only slower. `fn` must not throw.
+/// result is the same, only slower. When `fn` throws, every thread is
+/// joined and the first exception is rethrown here.
 template <typename RangeFn>
 void ParallelFor(size_t count, int threads, RangeFn&& fn)
 {
@@ -41,6 +85,7 @@ void ParallelFor(size_t count, int threads, RangeFn&& fn)
         return;
     }
     const size_t chunk = (count + size_t(n) - 1) / size_t(n);
+    detail::FirstException error;
     std::vector<std::thread> pool;
     std::vector<std::pair<size_t, size_t>> leftover;
     for (int t = 0; t < n; ++t)
@@ -58,7 +103,7 @@ void ParallelFor(size_t count, int threads, RangeFn&& fn)
         }
         try
         {
-            pool.emplace_back([&fn, b, e] { fn(b, e); });
+            pool.emplace_back([&fn, &error, b, e] { error.run([&] { fn(b, e); }); });
         }
         catch (const std::system_error&)
         {
@@ -67,38 +112,43 @@ void ParallelFor(size_t count, int threads, RangeFn&& fn)
     }
     for (const auto& [b, e] : leftover)
     {
-        fn(b, e);
+        error.run([&] { fn(b, e); });
     }
     for (std::thread& th : pool)
     {
         th.join();
     }
+    error.rethrow();
 }
 
 /// Runs `work()` on `threads` threads at once (including the calling one),
 /// for jobs that take their own items from a shared counter. Threads the
-/// system refuses are simply not started. `work` must not throw.
+/// system refuses are simply not started. When `work` throws, every thread
+/// is joined and the first exception is rethrown here (the others' items
+/// may have run or not: a job that throws has no partial result to keep).
 template <typename WorkFn>
 void ParallelRun(int threads, size_t items, WorkFn&& work)
 {
     const int n = ThreadCount(threads, items);
+    detail::FirstException error;
     std::vector<std::thread> pool;
     for (int t = 1; t < n; ++t)
     {
         try
         {
-            pool.emplace_back([&work] { work(); });
+            pool.emplace_back([&work, &error] { error.run(work); });
         }
         catch (const std::system_error&)
         {
             break;
         }
     }
-    work();
+    error.run(work);
     for (std::thread& th : pool)
     {
         th.join();
     }
+    error.rethrow();
 }
 
 }  // namespace bandlight

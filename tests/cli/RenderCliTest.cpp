@@ -218,6 +218,7 @@ TEST_CASE("The literal path (--unplanned) prints what it does, not the plan", "[
           "  then the band values are converted to acescg\n");
     const Result run =
         Bandlight("render '" + scene + "' --unplanned -o '" + Temp("unplanned.exr") + "'");
+    INFO(run.err);
     CHECK(run.code == 0);
     CHECK_THAT(run.out, Contains("the literal path") && !Contains("summed"));
 }
