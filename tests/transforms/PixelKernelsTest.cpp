@@ -181,7 +181,7 @@ TEST_CASE("The spectral dot product equals its reference within the stated bound
     // fused multiply-adds reorder the rounding, nothing else.
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    for (const size_t n : {1u, 2u, 7u, 15u, 16u, 17u, 31u, 81u, 471u})
+    for (const size_t n : {1u, 2u, 7u, 15u, 16u, 17u, 31u, 81u, 471u, 1100u})
     {
         const size_t stride = n + 4;  // R, G, B, A beside the spectrum
         const size_t count = 37;
@@ -213,6 +213,25 @@ TEST_CASE("The spectral dot product equals its reference within the stated bound
                 CHECK(std::abs(double(fast[3 * p + c]) - double(ref[3 * p + c])) <= bound);
                 CHECK(std::abs(double(fast[3 * p + c]) - exact) <= bound);
             }
+        }
+    }
+    // What follows a spectrum (the next pixel's R, G, B, A) never reaches its
+    // sums, NaN included; the buffer ends where the last spectrum does, so
+    // the sanitised suite sees any read past it.
+    for (const size_t n : {5u, 17u, 81u})
+    {
+        const size_t stride = n + 4, count = 9;
+        std::vector<float> w(3 * n, 0.25f);
+        std::vector<float> px((count - 1) * stride + n, std::nanf(""));
+        for (size_t p = 0; p < count; ++p)
+        {
+            std::fill_n(px.begin() + long(p * stride), n, float(p + 1));
+        }
+        std::vector<float> out(3 * count);
+        SpectralDot(w.data(), n, px.data(), count, stride, out.data(), 3);
+        for (size_t p = 0; p < count; ++p)
+        {
+            CHECK(out[3 * p + 2] == Approx(0.25 * double(n) * double(p + 1)).epsilon(1e-6));
         }
     }
     // NaN and Inf in the spectrum propagate.
