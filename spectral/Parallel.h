@@ -7,6 +7,7 @@
 #include <mutex>
 #include <system_error>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace bandlight
@@ -110,9 +111,9 @@ void ParallelFor(size_t count, int threads, RangeFn&& fn)
             leftover.push_back({b, e});
         }
     }
-    for (const auto& [b, e] : leftover)
+    for (const std::pair<size_t, size_t>& range : leftover)
     {
-        error.run([&] { fn(b, e); });
+        error.run([&] { fn(range.first, range.second); });
     }
     for (std::thread& th : pool)
     {
