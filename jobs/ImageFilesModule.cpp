@@ -5,12 +5,10 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <memory>
 
 #include <OpenImageIO/imageio.h>
-#include <OpenImageIO/thread.h>
 
 #include "jobs/ImageFiles.h"
 #include "spectral/AtomicFile.h"
@@ -235,17 +233,5 @@ const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &Rea
 
 extern "C" const bandlight::jobs::ImageFilesApi* bandlight_image_files_api()
 {
-    // OpenImageIO 2.4's shared thread pool is otherwise torn down by its
-    // static destructor while its workers may still wake on its mutex, which
-    // can abort the process as it exits (OpenImageIO issues #1991 and #3851;
-    // 2.5 added OIIO::shutdown() for this). Creating the pool here and
-    // registering the stop after it makes exit stop the workers first, while
-    // everything they use is alive.
-    static const bool stopsAtExit = []
-    {
-        OIIO::default_thread_pool();
-        return std::atexit([] { OIIO::default_thread_pool()->resize(0); }) == 0;
-    }();
-    (void)stopsAtExit;
     return &bandlight::jobs::kApi;
 }
