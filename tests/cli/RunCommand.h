@@ -36,7 +36,18 @@ inline Result Sh(const std::string& command)
     // One file per test process: ctest runs test processes in parallel.
     const std::string errFile = TempPath("stderr." + std::to_string(::getpid()) + ".txt");
     Result r;
-    FILE* p = popen((command + " 2>'" + errFile + "'").c_str(), "r");
+#ifdef BANDLIGHT_SANITIZED_TESTS
+    // The commands a test runs do not end with LeakSanitizer's leak check:
+    // its exit-time tracer itself crashes now and then (SIGSEGV in the
+    // tracer, "LeakSanitizer has encountered a fatal error") while
+    // OpenImageIO's and OpenEXR's worker threads are alive, failing a run
+    // whose work was right. ASan and UBSan stay on in them; the library's
+    // leaks are checked in process by the other suites.
+    const std::string run = "export ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\"; " + command;
+#else
+    const std::string& run = command;
+#endif
+    FILE* p = popen((run + " 2>'" + errFile + "'").c_str(), "r");
     REQUIRE(p);
     char buf[4096];
     for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;)
