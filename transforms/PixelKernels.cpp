@@ -212,30 +212,91 @@ void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t co
         *done);
 }
 
+// The dot product sums in 16 running partial sums (partial k takes the
+// samples j ≡ k mod 16, with a multiply and an add, never fused), folds them
+// in halves (k + 8, then + 4, + 2, + 1) and adds the last n mod 16 samples in
+// order: the same operations in the same order on every target, whatever
+// its vector width, so SpectralDotReference's bits. A 16-lane vector holds
+// the partial sums in one register, an 8-lane one in two, a 4-lane one in
+// four.
+constexpr size_t kDotPartials = 16;
+
+#if HWY_TARGET != HWY_SCALAR
+template <class DV>
+HWY_INLINE auto FoldToFour(DV dv, hn::Vec<DV> v)
+{
+    if constexpr (hn::MaxLanes(DV()) <= 4)
+    {
+        (void)dv;
+        return v;
+    }
+    else
+    {
+        const hn::Half<DV> dh;
+        return FoldToFour(dh, hn::Add(hn::LowerHalf(dh, v), hn::UpperHalf(dh, v)));
+    }
+}
+
+#endif
+
+template <class DV>
+HWY_INLINE float FoldPartials(DV dv, hn::Vec<DV>* acc, size_t k)
+{
+    for (; k > 1; k /= 2)
+    {
+        for (size_t i = 0; i < k / 2; ++i)
+        {
+            acc[i] = hn::Add(acc[i], acc[i + k / 2]);
+        }
+    }
+#if HWY_TARGET == HWY_SCALAR
+    (void)dv;
+    return hn::GetLane(acc[0]);  // one lane: the 16 vectors were the partials
+#else
+    static_assert(hn::MaxLanes(DV()) >= 4, "vector targets have 4 lanes or more");
+    HWY_ALIGN float q[4];
+    hn::StoreU(FoldToFour(dv, acc[0]), hn::FixedTag<float, 4>(), q);
+    return (q[0] + q[2]) + (q[1] + q[3]);
+#endif
+}
+
 void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
                      size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
 {
-    const D d;
-    const size_t lanes = hn::Lanes(d);
-    const size_t body = n - n % lanes;
+    // Highway's targets have 1 (HWY_SCALAR), 4, 8 or 16 float lanes: each
+    // divides the 16 partial sums.
+    using DV = hn::CappedTag<float, kDotPartials>;
+    const DV d;
+    static_assert(kDotPartials % hn::MaxLanes(DV()) == 0,
+                  "the vector width divides the partial sums");
+    constexpr size_t lanes = hn::MaxLanes(DV());
+    constexpr size_t k = kDotPartials / lanes;
+    const size_t body = n - n % kDotPartials;
     for (size_t p = 0; p < count; ++p)
     {
         const float* v = px + p * stride;
-        V a0 = hn::Zero(d), a1 = hn::Zero(d), a2 = hn::Zero(d);
-        for (size_t j = 0; j < body; j += lanes)
+        hn::Vec<DV> a0[k], a1[k], a2[k];
+        for (size_t i = 0; i < k; ++i)
         {
-            const V x = hn::LoadU(d, v + j);
-            a0 = hn::MulAdd(hn::LoadU(d, w + j), x, a0);
-            a1 = hn::MulAdd(hn::LoadU(d, w + n + j), x, a1);
-            a2 = hn::MulAdd(hn::LoadU(d, w + 2 * n + j), x, a2);
+            a0[i] = a1[i] = a2[i] = hn::Zero(d);
         }
-        float s0 = hn::GetLane(hn::SumOfLanes(d, a0)), s1 = hn::GetLane(hn::SumOfLanes(d, a1)),
-              s2 = hn::GetLane(hn::SumOfLanes(d, a2));
+        for (size_t j = 0; j < body; j += kDotPartials)
+        {
+            for (size_t i = 0; i < k; ++i)
+            {
+                const size_t o = j + i * lanes;
+                const hn::Vec<DV> x = hn::LoadU(d, v + o);
+                a0[i] = hn::Add(a0[i], hn::Mul(hn::LoadU(d, w + o), x));
+                a1[i] = hn::Add(a1[i], hn::Mul(hn::LoadU(d, w + n + o), x));
+                a2[i] = hn::Add(a2[i], hn::Mul(hn::LoadU(d, w + 2 * n + o), x));
+            }
+        }
+        float s0 = FoldPartials(d, a0, k), s1 = FoldPartials(d, a1, k), s2 = FoldPartials(d, a2, k);
         for (size_t j = body; j < n; ++j)
         {
-            s0 += w[j] * v[j];
-            s1 += w[n + j] * v[j];
-            s2 += w[2 * n + j] * v[j];
+            s0 = s0 + w[j] * v[j];
+            s1 = s1 + w[n + j] * v[j];
+            s2 = s2 + w[2 * n + j] * v[j];
         }
         float* o = out + p * outStride;
         o[0] = s0;
@@ -269,16 +330,31 @@ void SpectralDot(const float* weights, size_t n, const float* pixels, size_t cou
 void SpectralDotReference(const float* weights, size_t n, const float* pixels, size_t count,
                           size_t stride, float* out, size_t outStride) noexcept
 {
+    constexpr size_t kPartials = 16;  // the SIMD form's order (SpectralDotSimd)
+    const size_t body = n - n % kPartials;
     for (size_t p = 0; p < count; ++p)
     {
         const float* v = pixels + p * stride;
         float* o = out + p * outStride;
-        for (int c = 0; c < 3; ++c)
+        for (size_t c = 0; c < 3; ++c)
         {
-            float s = 0.0f;
-            for (size_t j = 0; j < n; ++j)
+            const float* w = weights + c * n;
+            float part[kPartials] = {};
+            for (size_t j = 0; j < body; ++j)
             {
-                s = s + weights[size_t(c) * n + j] * v[j];
+                part[j % kPartials] = part[j % kPartials] + w[j] * v[j];
+            }
+            for (size_t half = kPartials / 2; half > 0; half /= 2)
+            {
+                for (size_t i = 0; i < half; ++i)
+                {
+                    part[i] = part[i] + part[i + half];
+                }
+            }
+            float s = part[0];
+            for (size_t j = body; j < n; ++j)
+            {
+                s = s + w[j] * v[j];
             }
             o[c] = s;
         }

@@ -68,9 +68,11 @@ void RootPolyPixelsReference(const RootPolyKernelData& k, float* pixels, size_t 
 /// Spectral integration folded into weights: for each pixel, out[c] =
 /// Σ_j weights[c·n + j] · pixel[j] for c = 0, 1, 2, over `n` consecutive
 /// channels of each pixel (`stride` floats apart), written to `out` (3
-/// floats a pixel, `outStride` apart). The SIMD form sums in lanes and then
-/// across them, so it differs from the sequential reference by rounding
-/// only: at most 2·n·2⁻²⁴ · Σ_j |w_j · v_j| (tested). NaN and Inf propagate.
+/// floats a pixel, `outStride` apart). Both forms sum in the same order (16
+/// partial sums, folded in halves, then the last n mod 16 samples; no fused
+/// multiply-adds), so they agree bit for bit on every target and every
+/// machine gives the same image; the result is within 2·n·2⁻²⁴ · Σ_j |w_j ·
+/// v_j| of the exact sum (tested). NaN and Inf propagate.
 void SpectralDot(const float* weights, size_t n, const float* pixels, size_t count, size_t stride,
                  float* out, size_t outStride) noexcept;
 void SpectralDotReference(const float* weights, size_t n, const float* pixels, size_t count,
