@@ -44,11 +44,6 @@ std::string Message(const std::function<void()>& f)
     }
     return "(no error)";
 }
-
-bool FileExists(const std::string& path)
-{
-    return std::ifstream(path).good();
-}
 }  // namespace
 
 TEST_CASE("An illuminant with empty bands: band3 from it is refused by name, to it is defined",
