@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <mutex>
 #include <thread>
 
 #include <Eigen/LU>
@@ -136,17 +137,23 @@ std::vector<AccuracyRow> ForEachPair(
 {
     const std::vector<Pair> pairs = Pairs(o);
     std::vector<std::vector<AccuracyRow>> byPair(pairs.size());
-    std::atomic<size_t> next{0}, done{0};
+    std::atomic<size_t> next{0};
+    // Counted and reported under one lock, so progress arrives as 1/n, 2/n,
+    // ... in order whichever thread finishes first (counted apart from the
+    // report, two threads' reports could cross, and a step be lost).
+    std::mutex reportMutex;
+    size_t done = 0;
     ParallelRun(0, pairs.size(),
                 [&]
                 {
                     for (size_t p; (p = next++) < pairs.size();)
                     {
                         perPair(o.lights[pairs[p].from], o.lights[pairs[p].to], byPair[p]);
-                        const size_t d = ++done;
+                        std::lock_guard<std::mutex> lock(reportMutex);
+                        ++done;
                         if (progress)
                         {
-                            progress(double(d) / double(pairs.size()));
+                            progress(double(done) / double(pairs.size()));
                         }
                     }
                 });
