@@ -260,8 +260,14 @@ HWY_INLINE float FoldPartials(DV dv, hn::Vec<DV>* acc, size_t k)
 #endif
 }
 
-void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
-                     size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
+/// The dot products of `count` pixels. `Blocks` > 0 is n / 16 known at
+/// compile time (0: read from n): the block loop then unrolls and the
+/// pixel's loads interleave, which on the AVX-512 machine took 81 samples a
+/// pixel from 1.3 to about 1.05 times the time of reading the same bytes.
+template <size_t Blocks>
+HWY_INLINE void SpectralDotPixels(const float* HWY_RESTRICT w, size_t n,
+                                  const float* HWY_RESTRICT px, size_t count, size_t stride,
+                                  float* HWY_RESTRICT out, size_t outStride)
 {
     // Highway's targets have 1 (HWY_SCALAR), 4, 8 or 16 float lanes: each
     // divides the 16 partial sums.
@@ -271,7 +277,10 @@ void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RES
                   "the vector width divides the partial sums");
     constexpr size_t lanes = hn::MaxLanes(DV());
     constexpr size_t k = kDotPartials / lanes;
-    const size_t body = n - n % kDotPartials;
+    const size_t blocks = Blocks > 0 ? Blocks : n / kDotPartials;
+    const size_t body = blocks * kDotPartials;
+    const float* HWY_RESTRICT w1 = w + n;
+    const float* HWY_RESTRICT w2 = w + 2 * n;
     for (size_t p = 0; p < count; ++p)
     {
         const float* v = px + p * stride;
@@ -280,28 +289,57 @@ void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RES
         {
             a0[i] = a1[i] = a2[i] = hn::Zero(d);
         }
-        for (size_t j = 0; j < body; j += kDotPartials)
+        for (size_t blk = 0; blk < blocks; ++blk)
         {
             for (size_t i = 0; i < k; ++i)
             {
-                const size_t o = j + i * lanes;
+                const size_t o = blk * kDotPartials + i * lanes;
                 const hn::Vec<DV> x = hn::LoadU(d, v + o);
                 a0[i] = hn::Add(a0[i], hn::Mul(hn::LoadU(d, w + o), x));
-                a1[i] = hn::Add(a1[i], hn::Mul(hn::LoadU(d, w + n + o), x));
-                a2[i] = hn::Add(a2[i], hn::Mul(hn::LoadU(d, w + 2 * n + o), x));
+                a1[i] = hn::Add(a1[i], hn::Mul(hn::LoadU(d, w1 + o), x));
+                a2[i] = hn::Add(a2[i], hn::Mul(hn::LoadU(d, w2 + o), x));
             }
         }
         float s0 = FoldPartials(d, a0, k), s1 = FoldPartials(d, a1, k), s2 = FoldPartials(d, a2, k);
         for (size_t j = body; j < n; ++j)
         {
             s0 = s0 + w[j] * v[j];
-            s1 = s1 + w[n + j] * v[j];
-            s2 = s2 + w[2 * n + j] * v[j];
+            s1 = s1 + w1[j] * v[j];
+            s2 = s2 + w2[j] * v[j];
         }
         float* o = out + p * outStride;
         o[0] = s0;
         o[1] = s1;
         o[2] = s2;
+    }
+}
+
+void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
+                     size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
+{
+    // Spectra of up to 143 samples (pbrt's 16 buckets, 5 nm over the
+    // visible's 81) get a loop of known length; longer ones, whose block
+    // loop costs little beside their loads, the general one.
+    switch (n / kDotPartials)
+    {
+        case 1:
+            return SpectralDotPixels<1>(w, n, px, count, stride, out, outStride);
+        case 2:
+            return SpectralDotPixels<2>(w, n, px, count, stride, out, outStride);
+        case 3:
+            return SpectralDotPixels<3>(w, n, px, count, stride, out, outStride);
+        case 4:
+            return SpectralDotPixels<4>(w, n, px, count, stride, out, outStride);
+        case 5:
+            return SpectralDotPixels<5>(w, n, px, count, stride, out, outStride);
+        case 6:
+            return SpectralDotPixels<6>(w, n, px, count, stride, out, outStride);
+        case 7:
+            return SpectralDotPixels<7>(w, n, px, count, stride, out, outStride);
+        case 8:
+            return SpectralDotPixels<8>(w, n, px, count, stride, out, outStride);
+        default:
+            return SpectralDotPixels<0>(w, n, px, count, stride, out, outStride);
     }
 }
 

@@ -218,7 +218,7 @@ TEST_CASE("The spectral dot product equals its reference bit for bit, within the
     // (PixelKernels.h).
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    for (const size_t n : {1u, 2u, 7u, 15u, 16u, 17u, 31u, 32u, 33u, 81u, 471u, 1100u})
+    for (const size_t n : {1u, 2u, 7u, 15u, 16u, 17u, 31u, 32u, 33u, 48u, 63u, 64u, 81u, 100u, 120u, 143u, 144u, 471u, 1100u})
     {
         const size_t stride = n + 4;  // R, G, B, A beside the spectrum
         const size_t count = 37;
