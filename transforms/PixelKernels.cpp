@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "transforms/PixelKernels.cpp"
@@ -265,9 +266,8 @@ HWY_INLINE float FoldPartials(DV dv, hn::Vec<DV>* acc, size_t k)
 /// pixel's loads interleave, which on the AVX-512 machine took 81 samples a
 /// pixel from 1.3 to about 1.05 times the time of reading the same bytes.
 template <size_t Blocks>
-HWY_INLINE void SpectralDotPixels(const float* HWY_RESTRICT w, size_t n,
-                                  const float* HWY_RESTRICT px, size_t count, size_t stride,
-                                  float* HWY_RESTRICT out, size_t outStride)
+void SpectralDotPixels(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
+                       size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
 {
     // Highway's targets have 1 (HWY_SCALAR), 4, 8 or 16 float lanes: each
     // divides the 16 partial sums.
@@ -314,33 +314,25 @@ HWY_INLINE void SpectralDotPixels(const float* HWY_RESTRICT w, size_t n,
     }
 }
 
+/// SpectralDotPixels<0> (any length) and <1> … <8>, by the number of blocks.
+template <size_t... B>
+HWY_INLINE void SpectralDotByBlocks(std::index_sequence<B...>, const float* HWY_RESTRICT w,
+                                    size_t n, const float* HWY_RESTRICT px, size_t count,
+                                    size_t stride, float* HWY_RESTRICT out, size_t outStride)
+{
+    using Fn = void (*)(const float*, size_t, const float*, size_t, size_t, float*, size_t);
+    static constexpr Fn kByBlocks[] = {&SpectralDotPixels<B>...};
+    const size_t blocks = n / kDotPartials;
+    kByBlocks[blocks < sizeof...(B) ? blocks : 0](w, n, px, count, stride, out, outStride);
+}
+
 void SpectralDotSimd(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
                      size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
 {
     // Spectra of up to 143 samples (pbrt's 16 buckets, 5 nm over the
     // visible's 81) get a loop of known length; longer ones, whose block
     // loop costs little beside their loads, the general one.
-    switch (n / kDotPartials)
-    {
-        case 1:
-            return SpectralDotPixels<1>(w, n, px, count, stride, out, outStride);
-        case 2:
-            return SpectralDotPixels<2>(w, n, px, count, stride, out, outStride);
-        case 3:
-            return SpectralDotPixels<3>(w, n, px, count, stride, out, outStride);
-        case 4:
-            return SpectralDotPixels<4>(w, n, px, count, stride, out, outStride);
-        case 5:
-            return SpectralDotPixels<5>(w, n, px, count, stride, out, outStride);
-        case 6:
-            return SpectralDotPixels<6>(w, n, px, count, stride, out, outStride);
-        case 7:
-            return SpectralDotPixels<7>(w, n, px, count, stride, out, outStride);
-        case 8:
-            return SpectralDotPixels<8>(w, n, px, count, stride, out, outStride);
-        default:
-            return SpectralDotPixels<0>(w, n, px, count, stride, out, outStride);
-    }
+    SpectralDotByBlocks(std::make_index_sequence<9>(), w, n, px, count, stride, out, outStride);
 }
 
 const char* TargetName()
