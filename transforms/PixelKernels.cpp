@@ -219,7 +219,7 @@ void RootPolySimd(const RootPolyKernelData* k, float* HWY_RESTRICT px, size_t co
 // order: the same operations in the same order on every target, whatever
 // its vector width, so SpectralDotReference's bits. A 16-lane vector holds
 // the partial sums in one register, an 8-lane one in two, a 4-lane one in
-// four.
+// four, the scalar target in sixteen.
 constexpr size_t kDotPartials = 16;
 
 #if HWY_TARGET != HWY_SCALAR
@@ -237,7 +237,6 @@ HWY_INLINE auto FoldToFour(DV dv, hn::Vec<DV> v)
         return FoldToFour(dh, hn::Add(hn::LowerHalf(dh, v), hn::UpperHalf(dh, v)));
     }
 }
-
 #endif
 
 template <class DV>
@@ -263,8 +262,9 @@ HWY_INLINE float FoldPartials(DV dv, hn::Vec<DV>* acc, size_t k)
 
 /// The dot products of `count` pixels. `Blocks` > 0 is n / 16 known at
 /// compile time (0: read from n): the block loop then unrolls and the
-/// pixel's loads interleave, which on the AVX-512 machine took 81 samples a
-/// pixel from 1.3 to about 1.05 times the time of reading the same bytes.
+/// pixel's loads interleave, which on an AVX-512 machine took 81 samples a
+/// pixel from about 1.4 to 1.15–1.3 times the time of reading the same bytes
+/// (docs/speed.md).
 template <size_t Blocks>
 void SpectralDotPixels(const float* HWY_RESTRICT w, size_t n, const float* HWY_RESTRICT px,
                        size_t count, size_t stride, float* HWY_RESTRICT out, size_t outStride)
