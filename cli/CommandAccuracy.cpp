@@ -7,6 +7,8 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "jobs/AccuracyJob.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -25,7 +27,7 @@ struct AccuracyCommandOptions
     jobs::AccuracyRequest request;
 };
 
-void RunAccuracy(AccuracyCommandOptions& o)
+void RunAccuracy(AccuracyCommandOptions& o, const CLI::App& cmd)
 {
     jobs::AccuracyRequest& r = o.request;
     CommandReporter reporter;
@@ -51,6 +53,17 @@ void RunAccuracy(AccuracyCommandOptions& o)
         throw Exception("--from and --to name the lights of --image");
     }
     r.cost = !o.noCost;
+    // An output option given as '' would write nothing: refused, not ignored.
+    for (const char* name : {"--json", "--plot", "--heatmaps"})
+    {
+        const CLI::Option* option = cmd.get_option_no_throw(name);
+        if (option && option->count() > 0 && option->as<std::string>().empty())
+        {
+            throw ParameterError(std::string(name) +
+                                 " is '' (an empty path): name the file to write, or leave "
+                                 "the option out");
+        }
+    }
     // With --json - stdout carries the JSON alone.
     const bool toStdout = r.json == "-";
     if (toStdout)
@@ -102,7 +115,8 @@ void AddAccuracyCommand(CLI::App& app)
     cmd->add_option("--heatmaps", o->request.heatmaps,
                     "With --image: write a CIEDE2000 map per method into DIR (EXR, and PNG "
                     "with its scale)");
-    cmd->add_option("--working-space", o->request.workingSpace, "Working space")
+    cmd->add_option("--working-space", o->request.workingSpace,
+                    "Linear working space: " + RgbSpaceChoices())
         ->capture_default_str();
     cmd->add_option("--json", o->request.json,
                     "Write all rows and costs as JSON to FILE (- for stdout)");
@@ -114,7 +128,7 @@ void AddAccuracyCommand(CLI::App& app)
     cmd->add_flag("--ideal-only", o->request.idealOnly,
                   "Measure only the methods' exact forms, not the OCIO transforms that ship");
     AddPlatesOptions(*cmd, o->request.plates, true);
-    cmd->callback([o] { RunAccuracy(*o); });
+    cmd->callback([o, cmd] { RunAccuracy(*o, *cmd); });
 }
 
 }  // namespace bandlight::cli

@@ -22,9 +22,20 @@ struct ApplyOptions
     RelightOptions relight;
 };
 
-void RunApply(ApplyOptions& o)
+void RunApply(ApplyOptions& o, const CLI::App& cmd)
 {
     FrameSetReporter reporter;
+    const std::vector<std::string> given = GivenRelightOptions(cmd);
+    if (!o.request.look.empty() && !given.empty())
+    {
+        std::string names;
+        for (const std::string& n : given)
+        {
+            names += (names.empty() ? "" : ", ") + n;
+        }
+        throw ParameterError("{look} applies a look of {config} as it is: " + names +
+                             " do not apply to it (give the look, or the change of light)");
+    }
     if (o.request.look.empty() && o.relight.given())
     {
         o.request.relight = o.relight.relight(reporter);
@@ -62,7 +73,7 @@ void AddApplyCommand(CLI::App& app)
                     "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
     AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
-    cmd->callback([o] { RunApply(*o); });
+    cmd->callback([o, cmd] { RunApply(*o, *cmd); });
 }
 
 }  // namespace bandlight::cli

@@ -7,6 +7,8 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "jobs/ConfigJob.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -17,14 +19,33 @@ namespace
 struct ConfigCommandOptions
 {
     jobs::ConfigRequest request;
+    std::string out;
     std::string illuminants = defaults::CONFIG_ILLUMINANTS;
     std::string methods;
 };
 
-void RunConfig(ConfigCommandOptions& o)
+void RunConfig(ConfigCommandOptions& o, const CLI::App& cmd)
 {
     CommandReporter reporter;
     jobs::ConfigRequest& r = o.request;
+    r.out = o.out;
+    for (const char* list : {"--illuminants", "--methods"})
+    {
+        const CLI::Option* option = cmd.get_option_no_throw(list);
+        if (option && option->count() > 0 &&
+            jobs::SplitList(list == std::string("--methods") ? o.methods : o.illuminants).empty())
+        {
+            throw ParameterError(std::string(list) +
+                                 " is empty: name at least one, or leave it out for the "
+                                 "defaults");
+        }
+    }
+    const CLI::Option* basePaths = cmd.get_option_no_throw("--base-paths");
+    if (basePaths && basePaths->count() > 0 && r.base.empty())
+    {
+        throw ParameterError("{base_paths} rewrites the search paths of a {base}: give the base "
+                             "config, or leave {base_paths} out");
+    }
     for (const std::string& name : jobs::SplitList(o.illuminants))
     {
         r.lights.push_back(jobs::ResolveIlluminant(name, reporter));
@@ -32,7 +53,7 @@ void RunConfig(ConfigCommandOptions& o)
     r.methods = jobs::SplitList(o.methods);
     const jobs::ConfigResult result = jobs::MakeConfig(r, reporter);
     const ConfigPackage& package = result.package;
-    std::cout << "Wrote " << r.out << "/config.ocio: " << package.config->getNumLooks()
+    std::cout << "Wrote " << o.out << "/config.ocio: " << package.config->getNumLooks()
               << " looks and " << package.config->getNumNamedTransforms()
               << " named transforms for " << result.identified << " ("
               << result.options.lights.size() << " illuminants, " << result.options.methods.size()
@@ -40,7 +61,7 @@ void RunConfig(ConfigCommandOptions& o)
               << " plates";
     if (!package.lutFiles.empty())
     {
-        std::cout << ", and " << package.lutFiles.size() << " LUT files in " << r.out << "/luts";
+        std::cout << ", and " << package.lutFiles.size() << " LUT files in " << o.out << "/luts";
     }
     std::cout << "\n";
     if (!package.evidence.empty())
@@ -63,7 +84,7 @@ void AddConfigCommand(CLI::App& app)
     jobs::ConfigRequest& r = o->request;
     CLI::App* cmd = app.add_subcommand(
         "config", "Write an OCIO v2 config with one look per illuminant pair and method");
-    cmd->add_option("--out", r.out, "Directory to write config.ocio into (created if needed)")
+    cmd->add_option("--out", o->out, "Directory to write config.ocio into (created if needed)")
         ->required();
     cmd->add_option("--base", r.base,
                     "Existing config (OCIO v1 or v2) to add the looks and band space to, leaving "
@@ -78,9 +99,10 @@ void AddConfigCommand(CLI::App& app)
         ->check(CLI::IsMember({"relative", "absolute"}))
         ->capture_default_str();
     cmd->add_option("--working-space", r.workingSpace,
-                    "Linear working space: acescg (default), aces2065-1, lin-rec709, rec2020, "
-                    "p3-d65, ebu3213; with --base, the base's scene_linear primaries (detected "
-                    "when omitted)");
+                    "Linear working space: " + RgbSpaceChoices() + " (default " +
+                        defaults::WORKING_SPACE +
+                        "); with --base, the base's scene_linear primaries (detected when "
+                        "omitted)");
     cmd->add_option("--illuminants", o->illuminants,
                     "Comma-separated built-in illuminants or spectrum files")
         ->capture_default_str();
@@ -92,7 +114,7 @@ void AddConfigCommand(CLI::App& app)
             "with --camera)");
     AddObserverOption(*cmd, r.observer);
     AddPlatesOptions(*cmd, r.plates);
-    cmd->callback([o] { RunConfig(*o); });
+    cmd->callback([o, cmd] { RunConfig(*o, *cmd); });
 }
 
 }  // namespace bandlight::cli

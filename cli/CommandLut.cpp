@@ -7,6 +7,8 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "jobs/LutJob.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -66,12 +68,13 @@ void AddLutCommand(CLI::App& app)
                                        "OpenColorIO's writers");
     AddRelightOptions(*cmd, o->relight, true);
     cmd->add_option("--format", o->request.format,
-                    "clf, ctf, cube, spi3d, 3dl (scene-linear HDR through the shaper); "
+                    "Default: the format of the output's extension (.clf, .ctf, .cube, .spi3d, "
+                    ".3dl, .csp, .lut). clf, ctf, cube, spi3d, 3dl (scene-linear HDR through the "
+                    "shaper); "
                     "resolve_cube, csp, houdini (display-referred [0, 1], with --shaper none; "
                     "or any with --encoding acescct/acescc). "
                     "ICC is not offered: an ICC profile describes a device, not a scene-linear "
-                    "look")
-        ->capture_default_str();
+                    "look");
     CLI::Option* size = cmd->add_option(
         "--size", o->size,
         "3D LUT size per axis; for CLF/CTF, giving it bakes a 3D LUT instead of the matrix");

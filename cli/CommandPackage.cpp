@@ -7,6 +7,8 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "jobs/PackageJob.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {

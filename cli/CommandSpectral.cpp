@@ -9,6 +9,8 @@
 #include "cli/Diagnostics.h"
 #include "jobs/SpectralJob.h"
 #include "spectral/Parallel.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -74,7 +76,8 @@ void AddSpectralCommand(CLI::App& app)
     cmd->add_option("--to", o->to,
                     "Emissive images: the light to relight to (scaled to --from's luminance); "
                     "reflective images: the light to render under");
-    cmd->add_option("--working-space", s.workingSpace, "Linear RGB space of the output")
+    cmd->add_option("--working-space", s.workingSpace,
+                    "Linear RGB space of the output: " + RgbSpaceChoices())
         ->capture_default_str();
     cmd->add_option("--plates", s.plates.plates,
                     "balanced: white-balance the result from the light it shows to the working "

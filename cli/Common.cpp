@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "cli/Diagnostics.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -54,8 +56,7 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
         app.add_option("--to", o.to, "Illuminant it should look lit by (name or spectrum file)");
     app.add_option("--method", o.method, MethodHelp())->capture_default_str();
     app.add_option("--working-space", o.workingSpace,
-                   "Linear working space of the image: acescg, aces2065-1, lin-rec709, rec2020, "
-                   "p3-d65, ebu3213")
+                   "Linear working space of the image: " + RgbSpaceChoices())
         ->capture_default_str();
     AddPlatesOptions(app, o.plates);
     if (required)
@@ -63,6 +64,21 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
         from->required();
         to->required();
     }
+}
+
+std::vector<std::string> GivenRelightOptions(const CLI::App& app)
+{
+    std::vector<std::string> given;
+    for (const char* name : {"--from", "--to", "--method", "--working-space", "--plates",
+                             "--adaptation", "--camera", "--camera-idt"})
+    {
+        const CLI::Option* option = app.get_option_no_throw(name);
+        if (option && option->count() > 0)
+        {
+            given.push_back(name);
+        }
+    }
+    return given;
 }
 
 jobs::RelightRequest RelightOptions::relight(jobs::Reporter& reporter) const
@@ -91,7 +107,7 @@ void AddPlatesOptions(CLI::App& app, jobs::PlatesRequest& o, bool allowBoth)
         ->capture_default_str();
     app.add_option(
         "--camera", o.camera,
-        "SpectralCamera spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
+        "The camera's spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
         "columns): enables rootpoly-camera, and accuracy simulates that camera's plates");
     app.add_option("--camera-idt", o.idtLight,
                    "The light the camera's one fixed IDT was fitted for (rootpoly-camera's "

@@ -65,6 +65,10 @@ struct RelightOptions
 /// Adds the options above to a command.
 void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
 
+/// The options of AddRelightOptions that the command line gave ("--from",
+/// "--method", ...), to refuse them where they do not apply.
+std::vector<std::string> GivenRelightOptions(const CLI::App& app);
+
 /// --frames, --skip-existing, --keep-going and --threads, as `apply` and
 /// `spectral` take them.
 void AddFrameSetOptions(CLI::App& app, std::string& frames, bool& skipExisting, bool& keepGoing,

@@ -10,7 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "jobs/Frames.h"
 #include "jobs/Gnuplot.h"
+#include "jobs/OutputPaths.h"
 #include "jobs/detail/AccuracySummary.h"
 #include "jobs/detail/PlotLabels.h"
 #include "plugin/OcioTransforms.h"
@@ -61,7 +63,7 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
     std::vector<Point> pts;
     for (const std::string& m : options.methods)
     {
-        if (m == "rootpoly-camera" || m == "rootpoly3-camera" || !result.costAllThreads.count(m))
+        if (FindMethod(m).needsCamera || !result.costAllThreads.count(m))
         {
             continue;
         }
@@ -70,7 +72,7 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
         Point n{m + " (native)", std::max(native, 1e-3), {}};
         for (const ReflectanceSet& set : options.sets)
         {
-            const Filter shippedF{1.0, anyShipped && m != "spectral", key, "cie"};
+            const Filter shippedF{1.0, anyShipped && !FindMethod(m).isReference(), key, "cie"};
             p.de.push_back(
                 WorstExposure(result.rows, m, set.name, shippedF, options.exposures).second);
             // The native map is the ideal form itself.
@@ -222,6 +224,30 @@ ReflectanceSet ReflectanceSetFromFile(const std::string& path)
 
 AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
 {
+    {
+        // Every output before the measurement: a run of minutes must not
+        // fail at its end for a folder that does not exist.
+        OutputPlan plan;
+        if (!r.json.empty())
+        {
+            plan.file("{json}", r.json);
+        }
+        if (!r.plot.empty())
+        {
+            CheckPlotPath(r.plot);
+            plan.file("{plot}", r.plot);
+        }
+        if (!r.heatmaps.empty())
+        {
+            plan.folder("{heatmaps}", r.heatmaps);
+        }
+        for (const std::string& image : r.images)
+        {
+            CheckImageInput(image);
+            plan.input(image);
+        }
+        plan.check();
+    }
     AccuracyResult result;
     AccuracyOptions& options = result.options;
     options = DefaultAccuracyOptions();
@@ -264,22 +290,18 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         options.idtLight = idt.spectrum;
         if (r.methods.empty())
         {
-            options.methods.push_back("rootpoly-camera");
+            const std::vector<std::string>& camera = CameraMethodNames();
+            options.methods.insert(options.methods.end(), camera.begin(), camera.end());
         }
     }
-    if (std::find(options.methods.begin(), options.methods.end(), "spectral") ==
+    if (std::find(options.methods.begin(), options.methods.end(), ReferenceMethodName()) ==
         options.methods.end())
     {
-        options.methods.push_back("spectral");
+        options.methods.push_back(ReferenceMethodName());
     }
     for (const std::string& m : options.methods)
     {
-        const MethodSpec spec = ParseMethod(m);
-        if (spec.method == ChangeMethod::ROOTPOLY_CAMERA && !options.camera)
-        {
-            throw ParameterError("method '" + spec.name +
-                                 "' needs the camera that shot the plates ({camera=}FILE)");
-        }
+        RequireCamera(ParseMethod(m), bool(options.camera));
     }
     if (!r.defaultSets)
     {

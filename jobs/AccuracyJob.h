@@ -9,6 +9,7 @@
 #include "jobs/Inputs.h"
 #include "jobs/SpectralAccuracy.h"
 #include "transforms/Accuracy.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {
@@ -32,7 +33,7 @@ struct AccuracyRequest
     bool floor = true;  ///< the best a pixel-only method fitted on each set reaches
     bool cost = true;   ///< time every method (a few seconds)
     /// "both" (default: balanced and lit), "balanced" or "lit".
-    PlatesRequest plates{"both", defaults::ADAPTATION, "", defaults::IDT_LIGHT};
+    PlatesRequest plates{defaults::ACCURACY_PLATES, defaults::ADAPTATION, "", defaults::IDT_LIGHT};
     /// Spectral images measured as sets, each named after its file: every
     /// method on the image's pixels (as remittances) against the exact
     /// relight. `imageOptions.from` is the light an emissive image was lit

@@ -46,12 +46,12 @@ std::string AccuracyReport(const AccuracyResult& result)
                    "sample and pair      A/F2/F11->D65 worst  ns/pixel\n";
             for (const std::string& m : options.methods)
             {
-                if (m == "rootpoly-camera" || m == "rootpoly3-camera")
+                if (FindMethod(m).needsCamera)
                 {
                     continue;  // measured on camera plates below
                 }
                 const Filter idealF{1.0, false, key, "cie"};
-                const bool hasShipped = anyShipped && m != "spectral";
+                const bool hasShipped = anyShipped && !FindMethod(m).isReference();
                 const Filter shippedF{1.0, hasShipped, key, "cie"};
                 const Summary ideal = Summarise(rows, m, set.name, idealF);
                 const Summary shipped = Summarise(rows, m, set.name, shippedF);
@@ -97,7 +97,8 @@ std::string AccuracyReport(const AccuracyResult& result)
             out << "\n";
             for (const std::string& m : options.methods)
             {
-                if (m == "spectral" || m == "none" || m.find("-camera") != std::string::npos)
+                const MethodEntry& entry = FindMethod(m);
+                if (entry.isReference() || entry.identity || entry.needsCamera)
                 {
                     continue;
                 }
@@ -156,11 +157,11 @@ std::string AccuracyReport(const AccuracyResult& result)
                        "        daylight IDT\n";
                 for (const std::string& m : options.methods)
                 {
-                    if (m == "spectral")
+                    if (FindMethod(m).isReference())
                     {
                         continue;
                     }
-                    const bool cameraMethod = m.find("-camera") != std::string::npos;
+                    const bool cameraMethod = FindMethod(m).needsCamera;
                     const auto at = [&](const std::string& source, bool lecture)
                     {
                         return Summarise(rows, m, set.name, {1.0, false, key, source},

@@ -16,6 +16,18 @@
 namespace bandlight::jobs
 {
 
+namespace
+{
+/// The frames of a request; an image may be relit in place (the result
+/// keeps its other channels, metadata and parts).
+FrameSetRequest FrameSet(const ApplyRequest& r)
+{
+    FrameSetRequest f{r.input, r.output, r.frames, r.skipExisting, r.keepGoing};
+    f.mayReplaceInput = true;
+    return f;
+}
+}  // namespace
+
 ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
 {
     if (r.threads < 0 || r.threads > kMaxThreads)
@@ -23,6 +35,18 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
                              ", got " + std::to_string(r.threads));
     }
+    if (!r.look.empty() && r.relight)
+    {
+        throw ParameterError("{look} applies a look of {config} as it is: {src}, {dst}, {method} "
+                             "and the plates do not apply to it (give the look, or the change "
+                             "of light)");
+    }
+    if (r.look.empty() && !r.config.empty())
+    {
+        throw ParameterError("{config} holds the looks {look} names: give {look=}NAME with it");
+    }
+    // Every path before any work: a run that cannot write fails at once.
+    CheckFrameSetPaths(FrameSet(r));
     ApplyResult result;
     OCIO::ConstProcessorRcPtr processor;
     // rootpoly without a config is applied natively: a few ns a pixel, no
@@ -92,8 +116,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         }
         const MethodSpec method = relight.methodSpec(reporter);
         const Observer observer = ParseObserver(relight.observer);
-        if (method.method == ChangeMethod::ROOTPOLY ||
-            method.method == ChangeMethod::ROOTPOLY_CAMERA)
+        if (method.entry().appliesNatively())
         {
             const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
                                                                relight.working(), observer);
@@ -143,8 +166,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     };
 
     result.native = kernel.has_value() || bool(native);
-    const FrameRun run =
-        RunFrameSet({r.input, r.output, r.frames, r.skipExisting, r.keepGoing}, reporter, applyOne);
+    const FrameRun run = RunFrameSet(FrameSet(r), reporter, applyOne);
     result.frames = run.frames;
     result.skipped = run.skipped;
     result.failed = run.failed;

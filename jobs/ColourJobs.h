@@ -13,6 +13,7 @@
 #include "jobs/Inputs.h"
 #include "spectral/ColourRendering.h"
 #include "transforms/BandModel.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {
@@ -23,7 +24,7 @@ struct TablesRequest
 {
     std::string bands = defaults::BANDS;  ///< edges in nm
     std::string observer = defaults::OBSERVER;
-    std::string rule = "lecture";  ///< "lecture" (sample average) or "exact"
+    std::string rule = defaults::BAND_RULE;  ///< "lecture" (sample average) or "exact"
 };
 
 struct TablesResult

@@ -1,13 +1,61 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/ConfigJob.h"
 
+#include <filesystem>
+
+#include "jobs/OutputPaths.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::jobs
 {
 
+namespace
+{
+/// The output folder, before any work: writable, and not the base's own
+/// folder (its config.ocio would be replaced by the extended one).
+void CheckOutputFolder(const ConfigRequest& r)
+{
+    if (!r.out)
+    {
+        return;
+    }
+    if (r.out->empty())
+    {
+        OutputPlan().folder("{out}", "").check();  // refused: an empty path
+    }
+    if (!r.base.empty())
+    {
+        std::filesystem::path baseFolder = std::filesystem::path(r.base).parent_path();
+        if (baseFolder.empty())
+        {
+            baseFolder = ".";
+        }
+        if (SameFile(*r.out, baseFolder.string()))
+        {
+            throw ParameterError("{out} " + ShowPath(*r.out) + " is the folder of {base} " +
+                                 ShowPath(r.base) +
+                                 ": the extended config would replace the studio's own; write "
+                                 "it into a folder of its own");
+        }
+    }
+    OutputPlan plan;
+    plan.folder("{out}", *r.out, {"config.ocio"});
+    if (!r.base.empty())
+    {
+        plan.input(r.base);
+    }
+    plan.check();
+}
+}  // namespace
+
 ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
 {
+    CheckOutputFolder(r);
+    if (r.basePaths == "absolute" && r.base.empty() && !r.baseConfig)
+    {
+        throw ParameterError("{base_paths} rewrites the search paths of a {base}: give the base "
+                             "config, or leave {base_paths} out");
+    }
     ConfigResult result;
     ConfigOptions& options = result.options;
     options.plates = r.plates.parsed();
@@ -31,7 +79,7 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
     }
     options.methods = r.methods.empty() ? LinearMethodNames() : r.methods;
     options.workingSpace = r.workingSpace.empty() ? defaults::WORKING_SPACE : r.workingSpace;
-    options.outputDir = r.out;
+    options.outputDir = r.out.value_or("");
     options.lutSize = CheckedLutSize(r.lutSize, "lut_size");
     if (r.basePaths != "relative" && r.basePaths != "absolute")
     {
@@ -57,11 +105,11 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
         }
         result.package = ExtendConfig(base, options, r.workingSpace.empty(), &result.identified);
     }
-    if (!r.out.empty())
+    if (r.out)
     {
-        WriteConfigPackage(result.package, r.out);
+        WriteConfigPackage(result.package, *r.out);
         // Its LUT-file looks resolve from the folder they were written to.
-        result.package.config->setWorkingDir(r.out.c_str());
+        result.package.config->setWorkingDir(r.out->c_str());
     }
     else if (!result.package.lutFiles.empty())
     {

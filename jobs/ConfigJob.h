@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "jobs/Inputs.h"
 #include "plugin/ConfigBuilder.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {
@@ -15,9 +17,10 @@ namespace bandlight::jobs
 struct ConfigRequest
 {
     /// The folder config.ocio and its LUT files are written into (created
-    /// if needed, all files replaced together or none); empty: nothing is
-    /// written, which is refused when the config needs LUT files.
-    std::string out;
+    /// if needed, all files replaced together or none; checked before any
+    /// work, an empty path refused); not given: nothing is written, which is
+    /// refused when the config needs LUT files.
+    std::optional<std::string> out;
     /// A base config to extend, as a file (`base`) or already read
     /// (`baseConfig`, which wins); neither: a new config.
     std::string base;

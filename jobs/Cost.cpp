@@ -68,17 +68,12 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
     for (const std::string& name : methods)
     {
         MethodSpec method = ParseMethod(name);
-        if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
+        if (method.entry().needsCamera && !camera)
         {
-            if (!camera)
-            {
-                continue;
-            }
-            method.camera = camera;
-            method.idtLightName = idtLight.name;
-            method.idtLight = idtLight.spectrum;
+            continue;
         }
-        if (method.method == ChangeMethod::SPECTRAL)
+        method = WithCamera(std::move(method), camera, idtLight);
+        if (method.entry().isReference())
         {
             // The exact answer needs a spectrum per pixel: 81 samples through
             // the 3 × 81 (illuminant × matching functions) weights.
@@ -129,7 +124,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                                 : "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE),
                             threads, s * 1e9 / double(pixels)});
         }
-        if (!method.isLinear())
+        if (const char* directForm = method.entry().directForm)
         {
             const long n = std::min<long>(pixels, 20000);
             for (int threads : {1, AllThreads()})
@@ -149,9 +144,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                         direct.apply(px.data(), size_t(n), threads);
                     },
                     1);
-                rows.push_back({name,
-                                method.method == ChangeMethod::UPSAMPLE ? "direct-fit" : "native",
-                                threads, s * 1e9 / double(n)});
+                rows.push_back({name, directForm, threads, s * 1e9 / double(n)});
             }
         }
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/Frames.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <thread>
 #include <unordered_set>
 
+#include "jobs/OutputPaths.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::jobs
@@ -94,7 +96,11 @@ bool HasFramePattern(const std::string& pattern)
            FindPrintfField(pattern).pos != std::string::npos;
 }
 
-std::string ExpandFramePattern(const std::string& pattern, int frame)
+namespace
+{
+/// The pattern with its first frame field replaced by `frame`; the pattern
+/// itself when it has none.
+std::string ExpandFirstField(const std::string& pattern, int frame)
 {
     const size_t hash = pattern.find('#');
     if (hash != std::string::npos)
@@ -122,6 +128,48 @@ std::string ExpandFramePattern(const std::string& pattern, int frame)
         return pattern.substr(0, f.pos) + buf + pattern.substr(f.pos + f.length);
     }
     return pattern;
+}
+}  // namespace
+
+std::string ExpandFramePattern(const std::string& pattern, int frame)
+{
+    // Every field gets the frame ("out.##.##.exr", "out.%04d.####.exr"):
+    // a name whose second field stayed a pattern would name no frame.
+    std::string out = pattern;
+    for (int fields = 0; HasFramePattern(out); ++fields)
+    {
+        if (fields == 8)
+        {
+            throw Exception("frame pattern '" + OneLine(pattern, 80) +
+                            "' has more than 8 frame fields");
+        }
+        out = ExpandFirstField(out, frame);
+    }
+    return out;
+}
+
+bool IsFinishedFrame(const std::string& path)
+{
+    struct stat st{};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+           ::access(path.c_str(), R_OK) == 0;
+}
+
+void CheckImageInput(const std::string& path)
+{
+    struct stat st{};
+    if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode))
+    {
+        return;  // missing: the reader says so, frame by frame
+    }
+    throw ParameterError(
+        ShowPath(path) + " is " +
+        (S_ISDIR(st.st_mode)    ? "a folder"
+         : S_ISFIFO(st.st_mode) ? "a FIFO"
+         : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+         : S_ISSOCK(st.st_mode)                       ? "a socket"
+                                                      : "not a regular file") +
+        ", not an image file: images are read from regular files");
 }
 
 std::vector<int> ParseFrameRange(const std::string& text)
@@ -233,6 +281,33 @@ size_t FramesInFlight(const std::string& first)
 }
 }  // namespace
 
+void CheckFrameSetPaths(const FrameSetRequest& r)
+{
+    if (r.frames.empty())
+    {
+        if (HasFramePattern(r.input))
+        {
+            throw ParameterError("'" + OneLine(r.input, 200) +
+                                 "' is a frame pattern: give {frames=}FIRST-LAST");
+        }
+        CheckImageInput(r.input);
+        OutputPlan().input(r.input).file("{output}", r.output, r.mayReplaceInput).check();
+        return;
+    }
+    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
+    {
+        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+    }
+    OutputPlan plan;
+    for (const int f : ParseFrameRange(r.frames))
+    {
+        const std::string in = ExpandFramePattern(r.input, f);
+        CheckImageInput(in);
+        plan.input(in).file("{output}", ExpandFramePattern(r.output, f), r.mayReplaceInput);
+    }
+    plan.check();
+}
+
 FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
                      const std::function<void(const std::string& in, const std::string& out)>& one)
 {
@@ -244,6 +319,11 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
             throw ParameterError("'" + OneLine(r.input, 200) +
                                  "' is a frame pattern: give {frames=}FIRST-LAST");
         }
+        CheckFrameSetPaths(r);
+        if (r.mayReplaceInput && SameFile(r.input, r.output))
+        {
+            reporter.note(ShowPath(r.output) + " is the input: it is replaced by the result");
+        }
         one(r.input, r.output);
         run.frames = 1;
         return run;
@@ -253,6 +333,7 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
         throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
     }
     const std::vector<int> frames = ParseFrameRange(r.frames);
+    CheckFrameSetPaths(r);
     const auto t0 = std::chrono::steady_clock::now();
     // Frames in flight: each reads, works and writes on its own thread, so
     // one frame's reading and writing overlap another's; as many as there
@@ -282,7 +363,7 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
             const int f = frames[i];
             const std::string out = ExpandFramePattern(r.output, f);
             std::string state = "done";
-            if (r.skipExisting && std::filesystem::exists(out))
+            if (r.skipExisting && IsFinishedFrame(out))
             {
                 state = "skipped (exists)";
             }

@@ -14,7 +14,8 @@ namespace bandlight::jobs
 {
 
 /// Expands a frame pattern: "plate.####.exr" (or "%04d") with frame 1001
-/// gives "plate.1001.exr"; a name without a pattern is returned unchanged.
+/// gives "plate.1001.exr", every field of it ("a.##.##.exr": "a.1001.1001.exr");
+/// a name without a pattern is returned unchanged.
 std::string ExpandFramePattern(const std::string& pattern, int frame);
 bool HasFramePattern(const std::string& pattern);
 
@@ -58,19 +59,39 @@ struct FrameSetRequest
     bool skipExisting = false;
     /// A frame that fails does not stop the others; the run lists it.
     bool keepGoing = false;
+    /// An output may be its own input (apply in place: the result keeps what
+    /// the run carries); otherwise such a run is refused before any work.
+    bool mayReplaceInput = false;
     /// Frames read, worked and written at once (0: as many as there are
     /// cores, at most 4, fewer when their pixels would not fit in half the
     /// machine's memory).
     int inFlight = 0;
 };
 
-/// Calls `one(in, out)` for the image, or for each frame of the set: frames
+/// Checks every input and output path (CheckImageInput, OutputPlan: an
+/// output is never an input unless mayReplaceInput), then calls
+/// `one(in, out)` for the image, or for each frame of the set: frames
 /// start in order, `inFlight` of them at once on their own threads (`one`
 /// must be safe to call so), reporting progress as each finishes. Without
 /// keepGoing no frame starts after one fails, and the first failing frame
 /// (in order) throws once those in flight are done (the frames before it,
 /// and any in flight beside it, are written). Throws ParameterError for a
 /// pattern without frames or frames without patterns.
+/// Whether `path` is a finished frame for --skip-existing: a regular,
+/// readable file (outputs are renamed into place whole), not a folder.
+bool IsFinishedFrame(const std::string& path);
+
+/// Refuses (ParameterError) an image input that exists but is not a regular
+/// file (a FIFO, a device such as /dev/zero, a folder): reading one blocks
+/// or never ends. A missing input is left to the reader.
+void CheckImageInput(const std::string& path);
+
+/// The path checks RunFrameSet starts with, for a job to run before its own
+/// set-up work: every frame's input (CheckImageInput) and output
+/// (OutputPlan). Throws ParameterError for a pattern without frames or
+/// frames without patterns.
+void CheckFrameSetPaths(const FrameSetRequest& request);
+
 FrameRun RunFrameSet(const FrameSetRequest& request, Reporter& reporter,
                      const std::function<void(const std::string& in, const std::string& out)>& one);
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -124,15 +125,35 @@ std::string GnuplotDataLabel(const std::string& text)
     return out + "\"";
 }
 
+namespace
+{
+std::string PlotExtension(const std::string& output)
+{
+    std::string ext = output.size() > 4 ? output.substr(output.size() - 4) : "";
+    for (char& c : ext)
+    {
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return ext;
+}
+}  // namespace
+
+void CheckPlotPath(const std::string& output)
+{
+    const std::string ext = PlotExtension(output);
+    if (ext != ".svg" && ext != ".png")
+    {
+        throw ParameterError("{plot} '" + OneLine(output, 200) +
+                             "': plots are written as .png or .svg (the format follows the "
+                             "extension)");
+    }
+}
+
 void RunGnuplot(const std::string& script, const std::string& data, const std::string& output,
                 OutputSet* outputs)
 {
-    const bool svg = output.size() > 4 && output.substr(output.size() - 4) == ".svg";
-    const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
-    if (!svg && !png)
-    {
-        throw Exception(output + ": plots are written as .png or .svg");
-    }
+    CheckPlotPath(output);
+    const bool svg = PlotExtension(output) == ".svg";
     OutputSet own;
     AtomicFile& image = (outputs ? *outputs : own).add(output);
     image.stream().close();

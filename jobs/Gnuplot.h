@@ -23,6 +23,10 @@ std::string GnuplotQuote(const std::string& text);
 /// nothing; `"`, `\` and control characters are shown as `\xNN`.
 std::string GnuplotDataLabel(const std::string& text);
 
+/// Refuses (ParameterError) a plot path that is not a .png or .svg file:
+/// the format follows the extension (case-insensitive).
+void CheckPlotPath(const std::string& output);
+
 /// Runs a gnuplot script that draws into `output` (.png or .svg, chosen by
 /// extension): the script is given the terminal and the output file (a
 /// temporary name in the destination folder, renamed when gnuplot has

@@ -308,17 +308,13 @@ ImageDescription LinearImageDescription(const RgbSpace& space, const std::string
     // reads every EXR back as "Linear"): the name is also kept as
     // bandlight:colorSpace, and the Color Interop Forum ID as colorInteropID,
     // which later OpenImageIO versions read.
-    static const std::pair<const char*, const char*> kInteropIds[] = {
-        {"acescg", "lin_ap1_scene"},    {"aces2065-1", "lin_ap0_scene"},
-        {"rec709", "lin_rec709_scene"}, {"rec2020", "lin_rec2020_scene"},
-        {"p3-d65", "lin_p3d65_scene"},
-    };
     d.attributes.push_back({"bandlight:colorSpace", name});
-    for (const auto& [key, id] : kInteropIds)
+    for (const InteropId& id : space.interopIds)
     {
-        if (space.name == key)
+        if (!id.srgbEncoded)
         {
-            d.attributes.push_back({"colorInteropID", id});
+            d.attributes.push_back({"colorInteropID", id.id});
+            break;
         }
     }
     return d;

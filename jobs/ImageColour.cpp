@@ -32,19 +32,23 @@ const char* kOptions =
     "acescg or rec709, or srgb), or choose the space the work runs in with "
     "{working_space}";
 
-/// The Color Interop Forum's IDs bandlight reads (colorInteropID).
-struct InteropId
+/// The built-in space whose Color Interop Forum ID (colorInteropID) is `id`
+/// (lower case), with the ID's entry; nullptr when no space has it.
+const RgbSpace* SpaceOfInteropId(const std::string& id, InteropId& found)
 {
-    const char* id;
-    const char* space;
-    bool srgb;
-};
-constexpr InteropId kInteropIds[] = {
-    {"lin_ap1_scene", "acescg", false},      {"lin_ap0_scene", "aces2065-1", false},
-    {"lin_rec709_scene", "rec709", false},   {"lin_rec2020_scene", "rec2020", false},
-    {"lin_p3d65_scene", "p3-d65", false},    {"srgb_rec709_scene", "rec709", true},
-    {"srgb_rec709_display", "rec709", true},
-};
+    for (const RgbSpace& s : BuiltinRgbSpaces())
+    {
+        for (const InteropId& k : s.interopIds)
+        {
+            if (k.id == id)
+            {
+                found = k;
+                return &s;
+            }
+        }
+    }
+    return nullptr;
+}
 
 bool SameChromaticities(const Chromaticities& a, const Chromaticities& b)
 {
@@ -133,18 +137,7 @@ bool IntegerChannels(const ImageData& header)
 
 std::string SpaceLabel(const RgbSpace& space)
 {
-    static const std::pair<const char*, const char*> kLabels[] = {
-        {"acescg", "ACEScg"},    {"aces2065-1", "ACES2065-1"}, {"rec709", "Rec.709"},
-        {"rec2020", "Rec.2020"}, {"p3-d65", "P3-D65"},         {"ebu3213", "EBU Tech 3213"},
-    };
-    for (const auto& [key, label] : kLabels)
-    {
-        if (space.name == key)
-        {
-            return label;
-        }
-    }
-    return space.displayName;
+    return space.label.empty() ? space.displayName : space.label;
 }
 
 std::string ImageEncoding::describe() const
@@ -171,8 +164,7 @@ ImageEncoding NamedEncoding(const std::string& name)
     if (!s)
     {
         throw ParameterError("{colorspace} '" + OneLine(name, 80) +
-                             "' is not a built-in RGB space (acescg, aces2065-1, rec709, "
-                             "rec2020, p3-d65, ebu3213) or srgb");
+                             "' is not a built-in RGB space (" + RgbSpaceChoices() + ") or srgb");
     }
     e.space = *s;
     return e;
@@ -233,17 +225,17 @@ ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& 
     if (interop)
     {
         const std::string id = Lower(*interop);
-        const auto it = std::find_if(std::begin(kInteropIds), std::end(kInteropIds),
-                                     [&](const InteropId& k) { return id == k.id; });
-        if (it == std::end(kInteropIds))
+        InteropId known;
+        const RgbSpace* space = SpaceOfInteropId(id, known);
+        if (!space)
         {
             throw ParameterError(what + "has colorInteropID '" + OneLine(*interop, 60) +
                                  "', which bandlight does not convert; " + kOptions);
         }
         ImageEncoding e;
-        e.space = FindRgbSpace(it->space);
-        e.srgbCurve = it->srgb;
-        e.evidence = "colorInteropID " + std::string(it->id);
+        e.space = *space;
+        e.srgbCurve = known.srgbEncoded;
+        e.evidence = "colorInteropID " + known.id;
         agree(e);
     }
     if (chroma)

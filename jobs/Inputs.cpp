@@ -68,6 +68,14 @@ Light CheckedIlluminant(const NamedSpectrum& s, const std::string& source, Repor
     {
         reporter.note(note);
     }
+    if (checked.spectrum.step() > 5.0 + 1e-9)
+    {
+        char step[32];
+        std::snprintf(step, sizeof step, "%g", checked.spectrum.step());
+        reporter.note(source + ": " + checked.name + " is sampled every " + step +
+                      " nm, coarser than the CIE's 5 nm: it is integrated through its linear "
+                      "interpolant, exact only where the light is linear between its samples");
+    }
     return {checked.name, checked.spectrum};
 }
 
@@ -204,19 +212,9 @@ MethodSpec PlatesRequest::apply(MethodSpec method, const std::shared_ptr<const S
                                 Reporter& reporter) const
 {
     method.plates = parsed();
-    method.camera = cam;
-    if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
-    {
-        if (!cam)
-        {
-            throw ParameterError("method '" + method.name +
-                                 "' needs the camera that shot the plates ({camera=}FILE)");
-        }
-        const Light light = idt(reporter);
-        method.idtLightName = light.name;
-        method.idtLight = light.spectrum;
-    }
-    return method;
+    RequireCamera(method, bool(cam));
+    const Light idtLight = method.entry().needsCamera ? idt(reporter) : Light{};
+    return WithCamera(std::move(method), cam, idtLight);
 }
 
 MethodSpec MethodFor(const std::string& name, const std::vector<NamedSpectrum>& training,
@@ -229,7 +227,7 @@ MethodSpec MethodFor(const std::string& name, const std::vector<NamedSpectrum>& 
 
 MethodSpec WithTraining(MethodSpec method, const std::vector<NamedSpectrum>& training)
 {
-    if (method.method != ChangeMethod::FIT3X3 && method.method != ChangeMethod::ROOTPOLY)
+    if (!method.entry().takesTraining)
     {
         throw ParameterError("method '" + method.name +
                              "' is not fitted: {training} remittances are for fit3x3, "
@@ -260,9 +258,11 @@ std::vector<std::string> SplitList(const std::string& text)
     std::stringstream in(text);
     for (std::string item; std::getline(in, item, ',');)
     {
-        if (!item.empty())
+        // "A, D65" names A and D65: spaces around an item are not part of it.
+        const size_t first = item.find_first_not_of(" \t");
+        if (first != std::string::npos)
         {
-            out.push_back(item);
+            out.push_back(item.substr(first, item.find_last_not_of(" \t") - first + 1));
         }
     }
     return out;

@@ -113,7 +113,7 @@ struct RelightRequest
     Relighter relighter(Reporter& reporter = SilentReporter()) const;
 };
 
-/// Splits "a,b,c" into its non-empty items.
+/// Splits "a,b,c" into its non-empty items, spaces around each removed.
 std::vector<std::string> SplitList(const std::string& text);
 
 /// Throws Exception when a value about to be reported is not finite: a job

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "jobs/OutputPaths.h"
 #include "plugin/OcioTransforms.h"
 
 namespace bandlight::jobs
@@ -10,9 +11,10 @@ namespace bandlight::jobs
 
 LutResult MakeLut(const LutRequest& r, Reporter& reporter)
 {
+    OutputPlan().file("{out}", r.out).check();
     LutResult result;
     LutOptions options;
-    options.format = ParseLutFormat(r.format);
+    options.format = LutFormatForPath(r.out, r.format);
     options.size = r.size.value_or(defaults::LUT_SIZE);
     options.forceLattice = r.size.has_value();
     options.shaper = ShaperSpec::Parse(r.shaper);

@@ -6,6 +6,7 @@
 
 #include "jobs/Inputs.h"
 #include "luts/LutWriter.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {
@@ -15,8 +16,9 @@ struct LutRequest
 {
     RelightRequest relight;
     std::string out;  ///< the LUT file
-    std::string format =
-        defaults::LUT_FORMAT;  ///< clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini
+    /// clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini (LutFormats());
+    /// empty: the format that owns `out`'s extension (LutFormatForPath).
+    std::string format;
     /// 3D LUT points per axis (default defaults::LUT_SIZE); for CLF/CTF,
     /// giving it bakes a 3D LUT instead of the exact matrix.
     std::optional<int> size;

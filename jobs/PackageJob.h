@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "jobs/Reporter.h"
-#include "transforms/Defaults.h"
+#include "jobs/Defaults.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

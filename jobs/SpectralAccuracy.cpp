@@ -231,7 +231,7 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
     for (const std::string& name : methods)
     {
         const MethodSpec parsed = ParseMethod(name);
-        if (parsed.method == ChangeMethod::SPECTRAL || FindMethod(parsed.method).needsCamera)
+        if (parsed.entry().isReference() || parsed.entry().needsCamera)
         {
             continue;  // the reference itself; camera methods need the camera's plates
         }

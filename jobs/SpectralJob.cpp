@@ -234,6 +234,7 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
     (void)r.options.plates.parsed();
     (void)ParseObserver(r.options.observer);
     (void)r.options.layoutOptions();
+    CheckFrameSetPaths(r.files);  // an output is never its own spectral input
     SpectralResult result;
     bool first = true;
     std::mutex mu;  // frames run on several threads at once (RunFrameSet)
@@ -265,6 +266,20 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
         std::vector<float> rgb(3 * count);
         IntegrateSpectralPixels(conversion, image.pixels.data(), count, image.channels, rgb.data(),
                                 r.threads);
+        // Finite spectra whose integral leaves float's range (values near
+        // 3.4e38) would be written as Inf: refused, naming the pixel, as a
+        // NaN in a spectrum is.
+        for (size_t p = 0; p < count; ++p)
+        {
+            if (!std::isfinite(rgb[3 * p]) || !std::isfinite(rgb[3 * p + 1]) ||
+                !std::isfinite(rgb[3 * p + 2]))
+            {
+                throw Exception(in + ": pixel (" + std::to_string(p % size_t(image.width)) + ", " +
+                                std::to_string(p / size_t(image.width)) +
+                                "): its spectrum integrates beyond float's range (about 3.4e38); "
+                                "scale the image down");
+            }
+        }
         std::vector<float> pixels;
         if (outChannels == 4)
         {

@@ -12,6 +12,7 @@
 #include "jobs/Inputs.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/SpectralImage.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {
@@ -36,9 +37,9 @@ struct SpectralOptions
     /// them (ReadChannelWavelengths); `kind` "emissive" or "reflective".
     std::map<std::string, double> channelWavelengths;
     std::string channelWavelengthsFile;
-    std::string kind = "emissive";
+    std::string kind = defaults::SPECTRAL_KIND;
     /// "auto" (as the layout says), "points" or "buckets".
-    std::string sampling = "auto";
+    std::string sampling = defaults::SPECTRAL_SAMPLING;
 
     /// The layout options these make (the file of wavelengths read).
     SpectralLayoutOptions layoutOptions() const;

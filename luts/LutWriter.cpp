@@ -2,6 +2,7 @@
 #include "luts/LutWriter.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <cctype>
 #include <iomanip>
 
@@ -248,68 +249,108 @@ void WriteEncodedLut(const PixelFunction& exact, const LutOptions& o, const std:
 
 }  // namespace
 
+const std::vector<LutFormatEntry>& LutFormats()
+{
+    // clang-format off
+    static const std::vector<LutFormatEntry> formats = {
+        {LutFormat::CLF, "clf", {}, "clf", true, "Academy/ASC Common LUT Format (XML)"},
+        {LutFormat::CTF, "ctf", {}, "ctf", true, "Autodesk Color Transform Format (XML)"},
+        {LutFormat::CUBE, "cube", {}, "cube", true, "Iridas/Adobe .cube 3D LUT"},
+        {LutFormat::SPI3D, "spi3d", {}, "spi3d", true, "Sony Pictures Imageworks 3D LUT"},
+        {LutFormat::THREE_DL, "3dl", {}, "3dl", true, "Autodesk Flame 3D LUT (integer values)"},
+        {LutFormat::RESOLVE_CUBE, "resolve_cube", {"resolve-cube"}, "cube", false,
+         "DaVinci Resolve .cube with a 1D pre-LUT"},
+        {LutFormat::CINESPACE, "csp", {"cinespace"}, "csp", true, "Rising Sun cinespace"},
+        {LutFormat::HOUDINI, "houdini", {"lut"}, "lut", true, "SideFX Houdini .lut"},
+    };
+    // clang-format on
+    return formats;
+}
+
+namespace
+{
+std::string LowerText(std::string t)
+{
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
+    return t;
+}
+
+const LutFormatEntry& EntryOf(LutFormat format)
+{
+    for (const LutFormatEntry& e : LutFormats())
+    {
+        if (e.format == format)
+        {
+            return e;
+        }
+    }
+    throw Exception("LUT format " + std::to_string(int(format)) + " is not in the table");
+}
+}  // namespace
+
+std::string LutFormatChoices()
+{
+    std::string out;
+    for (const LutFormatEntry& e : LutFormats())
+    {
+        out += (out.empty() ? "" : ", ") + std::string(e.name);
+    }
+    return out;
+}
+
 LutFormat ParseLutFormat(const std::string& text)
 {
-    std::string t = text;
-    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (t == "clf")
+    const std::string t = LowerText(text);
+    for (const LutFormatEntry& e : LutFormats())
     {
-        return LutFormat::CLF;
+        if (t == e.name || std::find(e.aliases.begin(), e.aliases.end(), t) != e.aliases.end())
+        {
+            return e.format;
+        }
     }
-    if (t == "ctf")
-    {
-        return LutFormat::CTF;
-    }
-    if (t == "cube")
-    {
-        return LutFormat::CUBE;
-    }
-    if (t == "spi3d")
-    {
-        return LutFormat::SPI3D;
-    }
-    if (t == "3dl")
-    {
-        return LutFormat::THREE_DL;
-    }
-    if (t == "resolve_cube" || t == "resolve-cube")
-    {
-        return LutFormat::RESOLVE_CUBE;
-    }
-    if (t == "csp" || t == "cinespace")
-    {
-        return LutFormat::CINESPACE;
-    }
-    if (t == "houdini" || t == "lut")
-    {
-        return LutFormat::HOUDINI;
-    }
-    throw Exception("unknown LUT format '" + text +
-                    "' (clf, ctf, cube, spi3d, 3dl, resolve_cube, csp, houdini)");
+    throw Exception("unknown LUT format '" + OneLine(text, 40) + "' (" + LutFormatChoices() + ")");
 }
 
 const char* LutExtension(LutFormat format)
 {
-    switch (format)
+    return EntryOf(format).extension;
+}
+
+LutFormat LutFormatForPath(const std::string& path, const std::string& format)
+{
+    const std::string name = std::filesystem::path(path).filename().string();
+    const size_t dot = name.find_last_of('.');
+    const std::string ext = dot == std::string::npos || dot == 0 ? "" : LowerText(name.substr(dot + 1));
+    std::string extensions;
+    for (const LutFormatEntry& e : LutFormats())
     {
-        case LutFormat::CLF:
-            return "clf";
-        case LutFormat::CTF:
-            return "ctf";
-        case LutFormat::CUBE:
-            return "cube";
-        case LutFormat::SPI3D:
-            return "spi3d";
-        case LutFormat::THREE_DL:
-            return "3dl";
-        case LutFormat::RESOLVE_CUBE:
-            return "cube";
-        case LutFormat::CINESPACE:
-            return "csp";
-        case LutFormat::HOUDINI:
-            return "lut";
+        if (e.ownsExtension)
+        {
+            extensions += (extensions.empty() ? "." : ", .") + std::string(e.extension);
+        }
     }
-    return "";
+    if (!format.empty())
+    {
+        const LutFormat f = ParseLutFormat(format);
+        if (ext != EntryOf(f).extension)
+        {
+            throw ParameterError("{out} '" + OneLine(path, 200) + "': a " + EntryOf(f).name +
+                                 " LUT file is named ." + EntryOf(f).extension +
+                                 " (hosts choose the reader by the extension)");
+        }
+        return f;
+    }
+    for (const LutFormatEntry& e : LutFormats())
+    {
+        if (e.ownsExtension && ext == e.extension)
+        {
+            return e.format;
+        }
+    }
+    throw ParameterError("{out} '" + OneLine(path, 200) + "': " +
+                         (ext.empty() ? std::string("no extension")
+                                      : "the extension ." + OneLine(ext, 20) + " is no LUT format") +
+                         " bandlight writes (" + extensions + "); or name the {format}");
 }
 
 PixelFunction PixelFunctionOf(const OCIO::ConstTransformRcPtr& exact)

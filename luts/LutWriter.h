@@ -10,6 +10,7 @@
 #include "luts/LutEncoding.h"
 #include "luts/Shaper.h"
 #include "spectral/AtomicFile.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -30,15 +31,40 @@ enum class LutFormat
     HOUDINI,       ///< SideFX Houdini .lut, Baker "houdini"
 };
 
+/// A LUT format's one table entry: its names, its file extension, whether
+/// OpenColorIO's Baker writes it and under what name.
+struct LutFormatEntry
+{
+    LutFormat format;
+    const char* name;                  ///< "clf", "resolve_cube", ...
+    std::vector<const char*> aliases;  ///< other names ("cinespace", "resolve-cube")
+    const char* extension;             ///< without the dot: "cube"
+    /// The format a file of this extension is written in when no format is
+    /// named (one per extension: .cube is the Iridas/Adobe cube).
+    bool ownsExtension;
+    const char* what;  ///< one phrase for help and errors
+};
+
+/// Every LUT format, in the order help lists them.
+const std::vector<LutFormatEntry>& LutFormats();
+
 /// "clf", "ctf", "cube", "spi3d", "3dl", "resolve_cube", "csp" (or "cinespace"),
-/// "houdini" (case-insensitive); throws Exception otherwise.
+/// "houdini" (case-insensitive); throws Exception listing them otherwise.
 LutFormat ParseLutFormat(const std::string& text);
 const char* LutExtension(LutFormat format);
+/// The names of every format, as help and errors list them.
+std::string LutFormatChoices();
+
+/// The format of a LUT file path: `format` when given (its extension must
+/// be the file's: a CLF named .cube would be misread by every cube reader),
+/// else the format that owns the path's extension. Throws ParameterError
+/// naming the path and the extensions otherwise.
+LutFormat LutFormatForPath(const std::string& path, const std::string& format);
 
 struct LutOptions
 {
     LutFormat format = LutFormat::CLF;
-    int size = 33;  ///< lattice points per axis for 3D LUTs (2–129; `lut`: defaults::LUT_SIZE)
+    int size = defaults::TRANSFORM_LUT_SIZE;  ///< lattice points per axis for 3D LUTs (2–129; `lut`: defaults::LUT_SIZE)
     bool forceLattice = false;  ///< bake a 3D LUT even where a matrix fits (CLF/CTF)
     ShaperSpec shaper;          ///< for LutEncoding::LINEAR only
     /// ACEScct or ACEScc: the 3D LUT takes and returns encoded values, no

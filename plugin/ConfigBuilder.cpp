@@ -218,12 +218,7 @@ void RequireLights(const ConfigOptions& o)
     }
     for (const std::string& m : o.methods)
     {
-        const MethodSpec spec = o.method(m);
-        if (spec.method == ChangeMethod::ROOTPOLY_CAMERA && !spec.camera)
-        {
-            throw ParameterError("method '" + spec.name +
-                                 "' needs the camera that shot the plates ({camera=}FILE)");
-        }
+        RequireCamera(o.method(m));
     }
     std::set<std::string> names;
     for (const Light& l : o.lights)
@@ -282,15 +277,7 @@ OCIO::TransformRcPtr SrgbDecode()
 
 std::string ColorSpaceName(const RgbSpace& space)
 {
-    if (space.name == "acescg")
-    {
-        return "ACEScg";
-    }
-    if (space.name == "aces2065-1")
-    {
-        return "ACES2065-1";
-    }
-    return space.displayName;
+    return space.configName.empty() ? space.displayName : space.configName;
 }
 
 std::vector<Light> LectureLights()

@@ -78,38 +78,10 @@ Vec3 White(const RgbSpace& s)
 std::vector<Target> Targets()
 {
     std::vector<Target> t;
-    const auto keywordsOf = [](const std::string& key) -> std::vector<std::string>
-    {
-        if (key == "rec709")
-        {
-            return {"709", "srgb", "bt.709", "rec709"};
-        }
-        if (key == "acescg")
-        {
-            return {"acescg", "ap1"};
-        }
-        if (key == "aces2065-1")
-        {
-            return {"aces2065", "ap0", "aces"};
-        }
-        if (key == "rec2020")
-        {
-            return {"2020", "2100"};
-        }
-        if (key == "p3-d65")
-        {
-            return {"p3"};
-        }
-        if (key == "ebu3213")
-        {
-            return {"ebu", "3213"};
-        }
-        return {key};
-    };
     for (const RgbSpace& target : BuiltinRgbSpaces())
     {
         const RgbSpace* tp = &target;
-        t.push_back({target.displayName, keywordsOf(target.name),
+        t.push_back({target.displayName, target.keywords,
                      [tp](const RgbSpace& p)
                      {
                          const Mat3 to = RgbToXyzMatrix(tp->chromaticities).inverse();

@@ -12,6 +12,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/Spectrum.h"
 #include "transforms/BandSet.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -131,7 +132,7 @@ struct RenderSettings
     /// range (CIE 15:2004), is the widest allowed.
     double rangeMinNm = kDefaultRangeMinNm;
     double rangeMaxNm = kDefaultRangeMaxNm;
-    std::string output = "acescg";  ///< a working space, or "bands" (band mode: band values)
+    std::string output = defaults::WORKING_SPACE;  ///< a working space, or "bands" (band mode: band values)
 
     static constexpr double kDefaultRangeMinNm = 380.0;
     static constexpr double kDefaultRangeMaxNm = 780.0;

@@ -14,6 +14,21 @@ constexpr double kPi = 3.14159265358979323846;
 Vec3 IntegrateXyz(const Spectrum& stimulus, Observer observer)
 {
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
+    const double table = cmf.x.step();
+    if (stimulus.step() > table * (1.0 + 1e-9) && stimulus.size() > 1)
+    {
+        // Coarser than the tables: summed at its own samples, a lamp given
+        // every 100 nm would be weighed at five wavelengths of the matching
+        // functions (equal energy came out at x 0.365). It is integrated
+        // through its linear interpolant on the tables' grid instead, the
+        // one resampler every spectrum goes through (Spectrum::resampled),
+        // as remittances are: exact for a spectrum that is linear between
+        // its samples, equal energy included.
+        const double first =
+            cmf.x.start() + std::ceil((stimulus.start() - cmf.x.start()) / table - 1e-9) * table;
+        const size_t count = size_t(std::floor((stimulus.end() - first) / table + 1e-9)) + 1;
+        return IntegrateXyz(stimulus.resampled(first, table, count), observer);
+    }
     Vec3 xyz = Vec3::Zero();
     const double offset = (stimulus.start() - cmf.x.start()) / cmf.x.step();
     const bool aligned = std::abs(stimulus.step() - cmf.x.step()) < 1e-9 &&

@@ -175,6 +175,18 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
         throw Exception(source + ": the illuminant's wavelengths run to " + buf +
                         " nm; a light for colour lies below 100000 nm");
     }
+    // A handful of samples at least: two rows cannot say what a light is
+    // between them, and five at 100 nm (380–780) are the coarsest grid whose
+    // linear interpolant still gives a flat light its own white.
+    constexpr size_t kFewestSamples = 5;
+    if (illuminant.size() < kFewestSamples)
+    {
+        throw Exception(source + ": an illuminant of " + std::to_string(illuminant.size()) +
+                        " sample" + (illuminant.size() == 1 ? "" : "s") +
+                        " cannot be integrated honestly: give at least " +
+                        std::to_string(kFewestSamples) + " (every 100 nm over 380–780 nm at "
+                        "most; the CIE tabulates lights every 5 nm)");
+    }
     double peak = 0.0;
     for (const double v : illuminant.values())
     {

@@ -12,75 +12,108 @@
 namespace bandlight
 {
 
+namespace
+{
+
+std::string Lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+/// The prefixes that say a name means the linear space ("lin-rec709").
+constexpr const char* kLinearPrefixes[] = {"lin-", "linear-", "lin_"};
+
+}  // namespace
+
 const std::vector<RgbSpace>& BuiltinRgbSpaces()
 {
+    // Chromaticities: SMPTE ST 2065-1 (AP0), Academy S-2014-004 (AP1),
+    // ITU-R BT.709, ITU-R BT.2020, SMPTE EG 432-1 (P3), EBU Tech 3213.
+    // Interop IDs: the Color Interop Forum's recommendation (2024).
     // clang-format off
     static const std::vector<RgbSpace> spaces = {
         {"acescg", "ACEScg", "ACES AP1 primaries, ACES white (x 0.32168, y 0.33767); SMPTE ST 2065-1 / S-2014-004",
-         {0.713, 0.293, 0.165, 0.830, 0.128, 0.044, 0.32168, 0.33767}},
+         {0.713, 0.293, 0.165, 0.830, 0.128, 0.044, 0.32168, 0.33767},
+         {"ap1"}, "ACEScg", "ACEScg",
+         {{"lin_ap1_scene", false}},
+         {"acescg", "ap1"}},
         {"aces2065-1", "ACES2065-1", "ACES AP0 primaries, ACES white; SMPTE ST 2065-1",
-         {0.7347, 0.2653, 0.0, 1.0, 0.0001, -0.0770, 0.32168, 0.33767}},
+         {0.7347, 0.2653, 0.0, 1.0, 0.0001, -0.0770, 0.32168, 0.33767},
+         {"ap0", "aces"}, "ACES2065-1", "ACES2065-1",
+         {{"lin_ap0_scene", false}},
+         {"aces2065", "ap0", "aces"}},
         {"rec709", "Linear Rec.709 (sRGB)", "ITU-R BT.709 / IEC 61966-2-1 primaries, D65 white",
-         {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290}},
+         {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290},
+         {"bt709", "rec.709", "lin-srgb", "linear-srgb", "lin_srgb"}, "Linear Rec.709 (sRGB)", "Rec.709",
+         {{"lin_rec709_scene", false}, {"srgb_rec709_scene", true}, {"srgb_rec709_display", true}},
+         {"709", "srgb", "bt.709", "rec709"}},
         {"rec2020", "Linear Rec.2020", "ITU-R BT.2020 primaries, D65 white",
-         {0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0.3127, 0.3290}},
+         {0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0.3127, 0.3290},
+         {"bt2020", "rec.2020"}, "Linear Rec.2020", "Rec.2020",
+         {{"lin_rec2020_scene", false}},
+         {"2020", "2100"}},
         {"p3-d65", "Linear P3-D65", "SMPTE EG 432-1 P3 primaries, D65 white",
-         {0.680, 0.320, 0.265, 0.690, 0.150, 0.060, 0.3127, 0.3290}},
+         {0.680, 0.320, 0.265, 0.690, 0.150, 0.060, 0.3127, 0.3290},
+         {"p3", "p3d65"}, "Linear P3-D65", "P3-D65",
+         {{"lin_p3d65_scene", false}},
+         {"p3"}},
         {"ebu3213", "Linear EBU Tech 3213", "EBU Tech 3213 primaries, D65 white",
-         {0.64, 0.33, 0.29, 0.60, 0.15, 0.06, 0.3127, 0.3290}},
+         {0.64, 0.33, 0.29, 0.60, 0.15, 0.06, 0.3127, 0.3290},
+         {"ebu", "ebu-3213"}, "Linear EBU Tech 3213", "EBU Tech 3213",
+         {},
+         {"ebu", "3213"}},
     };
     // clang-format on
     return spaces;
 }
 
-const RgbSpace& FindRgbSpace(const std::string& name)
+std::string RgbSpaceChoices()
 {
-    std::string k = name;
-    std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
-    for (const char* prefix : {"lin-", "linear-", "lin_"})
-    {
-        if (k.rfind(prefix, 0) == 0)
-        {
-            k = k.substr(std::string(prefix).size());
-        }
-    }
-    if (k == "srgb" || k == "bt709" || k == "rec.709")
-    {
-        k = "rec709";
-    }
-    else if (k == "ap1")
-    {
-        k = "acescg";
-    }
-    else if (k == "ap0" || k == "aces")
-    {
-        k = "aces2065-1";
-    }
-    else if (k == "ebu" || k == "ebu-3213")
-    {
-        k = "ebu3213";
-    }
-    else if (k == "bt2020" || k == "rec.2020")
-    {
-        k = "rec2020";
-    }
-    else if (k == "p3" || k == "p3d65")
-    {
-        k = "p3-d65";
-    }
-    for (const RgbSpace& s : BuiltinRgbSpaces())
-    {
-        if (s.name == k)
-        {
-            return s;
-        }
-    }
     std::string choices;
     for (const RgbSpace& s : BuiltinRgbSpaces())
     {
         choices += (choices.empty() ? "" : ", ") + s.name;
     }
-    throw Exception("unknown working space '" + name + "' (choices: " + choices + ")");
+    return choices;
+}
+
+const RgbSpace& FindRgbSpace(const std::string& name)
+{
+    const std::string given = Lower(name);
+    const auto find = [](const std::string& k) -> const RgbSpace*
+    {
+        for (const RgbSpace& s : BuiltinRgbSpaces())
+        {
+            if (s.name == k || std::find(s.aliases.begin(), s.aliases.end(), k) != s.aliases.end())
+            {
+                return &s;
+            }
+        }
+        return nullptr;
+    };
+    if (const RgbSpace* s = find(given))
+    {
+        return *s;
+    }
+    for (const char* prefix : kLinearPrefixes)
+    {
+        if (given.rfind(prefix, 0) == 0)
+        {
+            if (const RgbSpace* s = find(given.substr(std::string(prefix).size())))
+            {
+                return *s;
+            }
+        }
+    }
+    if (given == "srgb")
+    {
+        throw ParameterError("'" + name +
+                             "' is the sRGB-encoded image encoding, not a linear working space: "
+                             "the linear space of sRGB's primaries is rec709 (also lin-srgb); "
+                             "for sRGB-encoded images say {colorspace=}srgb");
+    }
+    throw Exception("unknown working space '" + name + "' (choices: " + RgbSpaceChoices() + ")");
 }
 
 Vec3 WhiteXyz(double x, double y)

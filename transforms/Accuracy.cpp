@@ -206,11 +206,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
     for (const std::string& m : o.methods)
     {
         methods.push_back(ParseMethod(m));
-        if (methods.back().method == ChangeMethod::ROOTPOLY_CAMERA && !o.camera)
-        {
-            throw ParameterError("method '" + m +
-                                 "' needs the camera that shot the plates ({camera=}FILE)");
-        }
+        RequireCamera(methods.back(), bool(o.camera));
     }
     // Remittances sampled once.
     std::vector<std::vector<SurfaceRenderer::Samples>> samples(o.sets.size());
@@ -226,7 +222,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
     // lattice's nodes) shares them.
     std::vector<std::shared_ptr<UpsampleFits>> fits;
     if (std::any_of(methods.begin(), methods.end(),
-                    [](const MethodSpec& m) { return m.method == ChangeMethod::UPSAMPLE; }))
+                    [](const MethodSpec& m) { return m.entry().kernel == MethodKernel::UPSAMPLE; }))
     {
         for (const Light& light : o.lights)
         {
@@ -293,7 +289,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                 for (const MethodSpec& parsed : methods)
                 {
                     const MethodSpec method = WithPlates(parsed, plates, o);
-                    if (method.method == ChangeMethod::SPECTRAL)
+                    if (method.entry().isReference())
                     {
                         for (size_t s = 0; s < o.sets.size(); ++s)
                         {
@@ -317,7 +313,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                     for (const Source& source : sources)
                     {
                         // rootpoly-camera is made for the daylight-IDT plates only.
-                        const bool cameraMethod = method.method == ChangeMethod::ROOTPOLY_CAMERA;
+                        const bool cameraMethod = method.entry().needsCamera;
                         if (cameraMethod && source.name != "camera-daylight-idt")
                         {
                             continue;
@@ -416,7 +412,7 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
     for (const std::string& m : o.methods)
     {
         const MethodSpec spec = ParseMethod(m);
-        if (spec.method == ChangeMethod::FIT3X3 || spec.method == ChangeMethod::ROOTPOLY)
+        if (spec.entry().takesTraining)
         {
             methods.push_back(spec);
         }
@@ -439,9 +435,7 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
                 for (const MethodSpec& parsed : methods)
                 {
                     const MethodSpec method = WithPlates(parsed, plates, o);
-                    const std::vector<NamedSpectrum>& all = method.method == ChangeMethod::FIT3X3
-                                                                ? TrainingSet().samples
-                                                                : RootPolynomialTraining();
+                    const std::vector<NamedSpectrum>& all = TrainingOf(method);
                     const auto evaluate = [&](const MethodSpec& fitted,
                                               const std::vector<NamedSpectrum>& test,
                                               std::vector<Vec3>& predicted, std::vector<Vec3>& ref)

@@ -9,6 +9,7 @@
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/SpectrumIO.h"
 #include "transforms/SurfaceRenderer.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -69,6 +70,6 @@ Mat3 FitIdt(const SpectralCamera& camera, const Spectrum& light, const RgbSpace&
 
 /// The light a camera's fixed daylight IDT is fitted for when none is
 /// named: CIE D55, the "daylight" of camera vendors' IDTs.
-const char* const DEFAULT_IDT_LIGHT = "D55";
+const char* const DEFAULT_IDT_LIGHT = defaults::IDT_LIGHT;
 
 }  // namespace bandlight

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-// The one table of bandlight's defaults. The C++ request structs of the jobs
+// The one table of bandlight's library defaults: the parameters of the
+// transforms and measurements themselves. The jobs add the defaults of what
+// a run writes and how it runs (jobs/Defaults.h). The C++ request structs
 // (jobs/), the command's options (cli/) and the Python module's keywords
-// (python/) all take their defaults from here, so the three faces cannot
-// drift apart.
+// (python/) all take their defaults from these two files, so the three faces
+// cannot drift apart; tests/python/test_defaults.py holds Python to them.
 
 #include "transforms/Version.h"
 
@@ -25,8 +27,33 @@ inline constexpr const char* WORKING_SPACE = "acescg";
 inline constexpr const char* METHOD = "bradford";
 /// The CIE standard observer: 1931 (2°).
 inline constexpr const char* OBSERVER = "1931";
-/// The lecture's three bands, edges in nm.
+/// The three bands VB, VG, VR, edges in nm.
 inline constexpr const char* BANDS = "400,500,600,700";
+/// N equal bands span 400–700 nm by default.
+inline constexpr double EQUAL_BANDS_MIN_NM = 400.0;
+inline constexpr double EQUAL_BANDS_MAX_NM = 700.0;
+/// How band means are taken: "lecture" (the average of the 5 nm samples
+/// inside the band, docs/science.md) or "exact" (the interpolated spectrum
+/// integrated).
+inline constexpr const char* BAND_RULE = "lecture";
+/// The matching functions band matrices are made of: "xyz" (CIE) or "ebu".
+inline constexpr const char* MATCHING_SET = "xyz";
+/// The chromatic adaptation of a white-point change (adaptation_matrix).
+inline constexpr const char* WHITE_ADAPTATION = "bradford";
+/// The CIEDE2000 parametric factors kL, kC, kH (CIE 142-2001: 1 for the
+/// reference conditions).
+inline constexpr double CIEDE2000_K = 1.0;
+/// The remittances named when none are: the CIE 13.3 test colour samples.
+inline constexpr const char* REFLECTANCES = "TCS";
+/// A Planckian spectrum's grid when none is given: 300–830 nm at 5 nm.
+inline constexpr double PLANCK_START_NM = 300.0;
+inline constexpr double PLANCK_STEP_NM = 5.0;
+inline constexpr int PLANCK_COUNT = 107;
+/// What a spectral image holds when its channels do not say: radiance.
+inline constexpr const char* SPECTRAL_KIND = "emissive";
+/// How spectral channels are read: "auto" (point samples, or buckets where
+/// the layout says so), "points" or "buckets".
+inline constexpr const char* SPECTRAL_SAMPLING = "auto";
 /// The illuminants a config gets looks between (the lecture's five).
 inline constexpr const char* CONFIG_ILLUMINANTS = "A,C,D65,F2,F11";
 
@@ -52,15 +79,6 @@ inline constexpr const char* LUT_SHAPER = "log2";
 /// values, through the shaper), or "acescct" / "acescc" (those encodings of
 /// them, as log-grading hosts hand them over; no shaper).
 inline constexpr const char* LUT_ENCODING = "linear";
-/// The format of a `lut` file.
-inline constexpr const char* LUT_FORMAT = "clf";
-
-/// How a config extending a base rewrites the base's relative search paths.
-inline constexpr const char* BASE_PATHS = "relative";
-
-/// The folder `package` writes into.
-inline constexpr const char* PACKAGE_DIR = "bandlight-package";
-
 /// "bandlight 0.1.0": the version CMake's project() states.
 inline constexpr const char* VERSION = BANDLIGHT_VERSION;
 

@@ -20,7 +20,7 @@
 #include "transforms/Methods.h"
 #include "transforms/SpectralMethods.h"
 #include "transforms/Upsampler.h"
-#include "transforms/detail/LinearFits.h"
+#include "transforms/detail/MethodFits.h"
 
 #include <thread>
 
@@ -105,11 +105,7 @@ Mat3 AdaptationFit(const Light& from, const Light& to, const MethodSpec& method,
                    const RgbSpace& working, Observer observer)
 {
     const Mat3 m = RgbToXyzMatrix(working.chromaticities);
-    const AdaptationMethod cat =
-        method.method == ChangeMethod::VON_KRIES   ? AdaptationMethod::XYZ_SCALING
-        : method.method == ChangeMethod::BRADFORD  ? AdaptationMethod::BRADFORD
-        : method.method == ChangeMethod::PREFILTER ? AdaptationMethod::SHARP
-                                                   : AdaptationMethod::CAT02;
+    const AdaptationMethod cat = method.entry().adaptation;
     return m.inverse() * AdaptationMatrix(WhiteOf(from, observer), WhiteOf(to, observer), cat) * m;
 }
 
@@ -118,7 +114,7 @@ Mat3 LeastSquaresFit(const Light& from, const Light& to, const MethodSpec& metho
 {
     const SurfaceRenderer r1(from.spectrum, working, observer);
     const SurfaceRenderer r2(to.spectrum, working, observer);
-    return FitMatrix(r1, r2, method.training.empty() ? TrainingSet().samples : method.training);
+    return FitMatrix(r1, r2, TrainingOf(method));
 }
 
 Mat3 MetamerFit(const Light& from, const Light& to, const MethodSpec&, const RgbSpace& working,
@@ -136,7 +132,7 @@ Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method, const
     const BandSet& bands = method.bands;
     const BandBasis basis = MakeBandBasis(bands, observer);
     Eigen::VectorXd ratio(Eigen::Index(bands.size()));
-    if (method.method == ChangeMethod::BAND)
+    if (!method.whitePreserving)
     {
         const std::vector<double> i1 = IlluminantBands(from.spectrum, bands);
         const std::vector<double> i2 = IlluminantBands(to.spectrum, bands);
@@ -205,7 +201,7 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
                             const RgbSpace& working, Observer observer)
 {
     const Mat3 lit = LitChangeMatrix(from, to, method, working, observer);
-    if (!method.plates.balanced() || method.method == ChangeMethod::NONE)
+    if (!method.plates.balanced() || method.entry().identity)
     {
         return lit;
     }
@@ -238,10 +234,12 @@ Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& metho
 void Relighter::build(const Light& from, const Light& to, const MethodSpec& method,
                       const RgbSpace& working, Observer observer)
 {
-    if (method.method == ChangeMethod::SPECTRAL)
+    const MethodEntry& entry = method.entry();
+    if (entry.isReference())
     {
         throw Exception(
-            "method 'spectral' needs the spectra of the surfaces: it is the "
+            "method '" + method.name +
+            "' needs the spectra of the surfaces: it is the "
             "reference `bandlight accuracy` measures against, not an image transform");
     }
     if (method.isLinear())
@@ -250,74 +248,120 @@ void Relighter::build(const Light& from, const Light& to, const MethodSpec& meth
         return;
     }
     m_linear = false;
+    PixelForm form = entry.pixelForm(from, to, method, working, observer);
+    m_hasPre = form.hasPre;
+    m_pre = form.pre;
+    m_hasPost = form.hasPost;
+    m_post = form.post;
+    m_rootpoly = std::move(form.rootpoly);
+    if (entry.kernel == MethodKernel::UPSAMPLE)
+    {
+        m_matrix = form.fallback;
+        m_spectral = std::make_unique<Spectral>(SurfaceRenderer(from.spectrum, working, observer),
+                                                SurfaceRenderer(to.spectrum, working, observer));
+    }
+}
+
+namespace detail
+{
+
+namespace
+{
+/// The balances of balanced plates around a non-linear method: the inverse
+/// balance for `from` before it, the balance for `to` after it (identities
+/// for lit plates).
+struct PlateBalance
+{
+    bool balanced;
+    Mat3 from = Mat3::Identity();
+    Mat3 to = Mat3::Identity();
+};
+
+PlateBalance BalanceOf(const Light& from, const Light& to, const MethodSpec& method,
+                       const RgbSpace& working, Observer observer)
+{
+    PlateBalance b{method.plates.balanced()};
+    if (b.balanced)
+    {
+        b.from = BalanceMatrix(from.spectrum, working, method.plates.adaptation, observer);
+        b.to = BalanceMatrix(to.spectrum, working, method.plates.adaptation, observer);
+    }
+    return b;
+}
+}  // namespace
+
+PixelForm UpsampleForm(const Light& from, const Light& to, const MethodSpec& method,
+                       const RgbSpace& working, Observer observer)
+{
+    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
+    PixelForm form;
+    form.hasPre = balance.balanced;
+    form.pre = balance.from.inverse();
+    form.hasPost = balance.balanced;
+    form.post = balance.to;
+    form.fallback = MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
+                                  SurfaceRenderer(to.spectrum, working, observer));
+    return form;
+}
+
+PixelForm RootPolyForm(const Light& from, const Light& to, const MethodSpec& method,
+                       const RgbSpace& working, Observer observer)
+{
+    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
     const SurfaceRenderer r1(from.spectrum, working, observer);
     const SurfaceRenderer r2(to.spectrum, working, observer);
-    // Balanced plates: back to the light's cast before the method, the
-    // balance for `to` after it.
-    const bool balanced = method.plates.balanced();
-    const AdaptationMethod adaptation = method.plates.adaptation;
-    const Mat3 balanceFrom =
-        balanced ? BalanceMatrix(from.spectrum, working, adaptation, observer) : Mat3::Identity();
-    const Mat3 balanceTo =
-        balanced ? BalanceMatrix(to.spectrum, working, adaptation, observer) : Mat3::Identity();
-    m_hasPre = balanced;
-    m_pre = balanceFrom.inverse();
-    if (method.method == ChangeMethod::ROOTPOLY)
-    {
-        const RootPolynomial lit = FitRootPolynomial(
-            r1, r2, method.training.empty() ? RootPolynomialTraining() : method.training,
-            method.degree);
-        m_rootpoly = std::make_unique<RootPolynomial>(method.degree, balanceTo * lit.matrix());
-        return;
-    }
-    if (method.method == ChangeMethod::ROOTPOLY_CAMERA)
-    {
-        if (!method.camera)
-        {
-            throw ParameterError("method '" + method.name +
-                                 "' needs the camera that shot the plates ({camera=}FILE)");
-        }
-        // The plates: camera RGB balanced for `from` by gains, through one
-        // IDT fitted for the daylight. Back through that IDT to the
-        // camera's balanced record, then to the colour under `from` as the
-        // camera's own IDT for `from` sees it (for the observer as camera,
-        // exactly the plain path's input); the root polynomial, fitted from
-        // those records to the truth under `to`, corrects the rest.
-        const Spectrum daylight =
-            method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
-        const SpectralCamera& camera = *method.camera;
-        const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
-        const Mat3 cameraLit =
-            BalanceMatrix(from.spectrum, working, adaptation, observer).inverse() *
-            FitIdt(camera, from.spectrum, working, adaptation, observer);
-        const CameraShot shot(camera, from.spectrum);
-        ColourFit fit;
-        for (const NamedSpectrum& t :
-             method.training.empty() ? RootPolynomialTraining() : method.training)
-        {
-            const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
-            fit.input.push_back(cameraLit * shot.record(r));
-            fit.target.push_back(r2.render(r));
-        }
-        fit.whiteIn = cameraLit * Vec3::Ones();
-        fit.whiteOut = r2.white();
-        fit.rgbToXyz = r2.rgbToXyz();
-        fit.labWhite = r2.rgbToXyz() * r2.white();
-        const RootPolynomial lit = FitRootPolynomial(fit, method.degree);
-        m_rootpoly = std::make_unique<RootPolynomial>(method.degree, balanceTo * lit.matrix());
-        // Lit plates are the balanced ones with the cast put back.
-        const Mat3 plateToBalanced =
-            balanced ? Mat3::Identity()
-                     : BalanceMatrix(from.spectrum, working, adaptation, observer);
-        m_pre = cameraLit * idtDaylight.inverse() * plateToBalanced;
-        m_hasPre = true;
-        return;
-    }
-    m_matrix = MetamerMatrix(r1, r2);
-    m_spectral = std::make_unique<Spectral>(r1, r2);
-    m_hasPost = balanced;
-    m_post = balanceTo;
+    PixelForm form;
+    form.hasPre = balance.balanced;
+    form.pre = balance.from.inverse();
+    const RootPolynomial lit = FitRootPolynomial(r1, r2, TrainingOf(method), method.degree);
+    form.rootpoly = std::make_unique<RootPolynomial>(method.degree, balance.to * lit.matrix());
+    return form;
 }
+
+PixelForm RootPolyCameraForm(const Light& from, const Light& to, const MethodSpec& method,
+                             const RgbSpace& working, Observer observer)
+{
+    RequireCamera(method);
+    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
+    const AdaptationMethod adaptation = method.plates.adaptation;
+    const SurfaceRenderer r2(to.spectrum, working, observer);
+    // The plates: camera RGB balanced for `from` by gains, through one IDT
+    // fitted for the daylight. Back through that IDT to the camera's
+    // balanced record, then to the colour under `from` as the camera's own
+    // IDT for `from` sees it (for the observer as camera, exactly the plain
+    // path's input); the root polynomial, fitted from those records to the
+    // truth under `to`, corrects the rest.
+    const Spectrum daylight =
+        method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
+    const SpectralCamera& camera = *method.camera;
+    const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
+    const Mat3 cameraLit = BalanceMatrix(from.spectrum, working, adaptation, observer).inverse() *
+                           FitIdt(camera, from.spectrum, working, adaptation, observer);
+    const CameraShot shot(camera, from.spectrum);
+    ColourFit fit;
+    for (const NamedSpectrum& t : TrainingOf(method))
+    {
+        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+        fit.input.push_back(cameraLit * shot.record(r));
+        fit.target.push_back(r2.render(r));
+    }
+    fit.whiteIn = cameraLit * Vec3::Ones();
+    fit.whiteOut = r2.white();
+    fit.rgbToXyz = r2.rgbToXyz();
+    fit.labWhite = r2.rgbToXyz() * r2.white();
+    const RootPolynomial lit = FitRootPolynomial(fit, method.degree);
+    PixelForm form;
+    form.rootpoly = std::make_unique<RootPolynomial>(method.degree, balance.to * lit.matrix());
+    // Lit plates are the balanced ones with the cast put back.
+    const Mat3 plateToBalanced =
+        balance.balanced ? Mat3::Identity()
+                         : BalanceMatrix(from.spectrum, working, adaptation, observer);
+    form.pre = cameraLit * idtDaylight.inverse() * plateToBalanced;
+    form.hasPre = true;
+    return form;
+}
+
+}  // namespace detail
 
 Relighter::~Relighter() = default;
 Relighter::Relighter(Relighter&&) noexcept = default;

@@ -10,100 +10,12 @@
 #include "spectral/RgbSpaces.h"
 #include "spectral/Spectrum.h"
 #include "spectral/SpectrumIO.h"
-#include "transforms/BandSet.h"
-#include "transforms/Camera.h"
+#include "transforms/Methods.h"
 #include "transforms/PixelKernels.h"
-#include "transforms/Plates.h"
 #include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {
-
-/// A way of changing the illuminant an image appears lit by.
-enum class ChangeMethod
-{
-    NONE,       ///< identity: the reference for "doing nothing"
-    VON_KRIES,  ///< von Kries scaling of XYZ by the ratio of the whites
-    BRADFORD,   ///< linearised Bradford chromatic adaptation
-    CAT02,      ///< CIECAM02 chromatic adaptation
-    BAND,       ///< the lecture's band model: band ratios of the two lights
-    BAND_WP,    ///< band model whose ratios come from the two whites: exact on white
-    FIT3X3,     ///< least-squares 3×3 on training remittances, white-preserving
-    PREFILTER,  ///< von Kries in sharpened primaries (Ward & Eydelberg-Vileshin 2002)
-    METAMER,    ///< smoothest remittance reproducing the pixel under S1, re-lit
-    UPSAMPLE,   ///< sigmoid-polynomial remittance (Jakob & Hanika 2019), re-lit: not linear
-    ROOTPOLY,   ///< root-polynomial regression (Finlayson et al. 2015) on measured remittances
-    /// rootpoly fitted from a camera's own record: for plates made with one
-    /// fixed daylight IDT and white-balance gains
-    ROOTPOLY_CAMERA,
-    SPECTRAL,  ///< the exact answer for known spectra: the reference, not an image transform
-};
-
-/// A method with its parameters (transforms/Methods.h lists them all),
-/// parsed from its name: "none", "vonkries",
-/// "bradford", "cat02", "band3" (the lecture's VB/VG/VR), "band3-wp",
-/// "bandN" / "bandN-wp" (N equal bands over 400–700 nm), any band set as
-/// "bands380-480-560-780" (edges in nm, "-wp" appended for the
-/// white-preserving form: no ':' or '=' so it can name looks), "fit3x3",
-/// "prefilter", "metamer", "upsample", "rootpoly" (degree 2), "rootpoly3"
-/// (degree 3), "rootpoly-camera" / "rootpoly3-camera" (need `camera`),
-/// "spectral".
-struct MethodSpec
-{
-    ChangeMethod method = ChangeMethod::NONE;
-    BandSet bands = BandSet::Lecture();
-    std::string name;  ///< canonical name, used in look names: "band3-wp"
-    /// fit3x3's and rootpoly's training remittances (empty: their defaults,
-    /// TrainingSet() and RootPolynomialTraining()).
-    std::vector<NamedSpectrum> training;
-    int degree = 2;  ///< rootpoly's degree
-    /// What the images are: lit by the source light (the default at this
-    /// level: the physical change between two lights) or white-balanced to
-    /// the working white, in which case the method is wrapped in the
-    /// inverse balance for `from` and the balance for `to`. `none` stays the
-    /// identity in both conventions: it is what doing nothing does.
-    Plates plates;
-    /// rootpoly-camera: the camera that shot the plates, and the light its
-    /// one fixed IDT was fitted for (empty spectrum: DEFAULT_IDT_LIGHT).
-    std::shared_ptr<const SpectralCamera> camera;
-    std::string idtLightName = DEFAULT_IDT_LIGHT;
-    Spectrum idtLight;
-
-    bool usesBands() const noexcept
-    {
-        return method == ChangeMethod::BAND || method == ChangeMethod::BAND_WP;
-    }
-    /// One 3×3 in the working space (everything but upsample, rootpoly,
-    /// rootpoly-camera and spectral): its registry entry's kernel is MATRIX.
-    bool isLinear() const noexcept;
-};
-
-/// Parses a method name (case-insensitive); throws Exception listing the choices.
-MethodSpec ParseMethod(const std::string& name);
-
-/// The linear methods a config gets by default: none, vonkries, bradford,
-/// cat02, band3, band3-wp.
-const std::vector<std::string>& LinearMethodNames();
-
-/// Every image method compared by `bandlight accuracy`: the linear ones,
-/// band6, band6-wp, fit3x3, prefilter, metamer, upsample, rootpoly and
-/// rootpoly3.
-const std::vector<std::string>& AllMethodNames();
-
-/// Every method name a user can give, as help text: "none, vonkries, ...,
-/// rootpoly-camera (with {camera})" (a ParameterError template).
-std::string MethodSyntax();
-
-/// One sentence on what a method does and how accurate it is, for look
-/// descriptions and --help.
-std::string DescribeMethod(const MethodSpec& method);
-
-/// An illuminant with the name it is known by.
-struct Light
-{
-    std::string name;
-    Spectrum spectrum;
-};
 
 /// The 3×3 in the linear RGB space `working` that makes an image lit by
 /// `from` look lit by `to`. For the band methods: working RGB → XYZ → band

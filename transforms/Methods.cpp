@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "spectral/Exception.h"
-#include "transforms/detail/LinearFits.h"
+#include "transforms/detail/MethodFits.h"
 
 namespace bandlight
 {
@@ -68,6 +68,7 @@ bool ParseBand(const std::string& n, MethodSpec& m)
         if (edges.size() > 3 && edges.compare(edges.size() - 3, 3, "-wp") == 0)
         {
             m.method = ChangeMethod::BAND_WP;
+            m.whitePreserving = true;
             edges = edges.substr(0, edges.size() - 3);
         }
         std::replace(edges.begin(), edges.end(), '-', ',');
@@ -88,6 +89,7 @@ bool ParseBand(const std::string& n, MethodSpec& m)
     if (dash != std::string::npos && dash + 3 == rest.size())
     {
         m.method = ChangeMethod::BAND_WP;
+        m.whitePreserving = true;
         rest = rest.substr(0, dash);
     }
     const bool digits =
@@ -105,7 +107,7 @@ bool ParseBand(const std::string& n, MethodSpec& m)
 std::string DescribeBand(const MethodSpec& m)
 {
     std::ostringstream s;
-    if (m.method == ChangeMethod::BAND)
+    if (!m.whitePreserving)
     {
         s << "The lecture's " << m.bands.size() << "-band model: each band (" << m.bands.describe()
           << " nm) scaled by the ratio of the lights' band means, white luminance kept; "
@@ -122,90 +124,165 @@ std::string DescribeBand(const MethodSpec& m)
 
 #define BANDLIGHT_TEXT(TEXT) [](const MethodSpec&) -> std::string { return TEXT; }
 
+/// An entry with its name, kernel, parser and description; the rest is set
+/// field by field below.
+MethodEntry Entry(ChangeMethod method, const char* syntax, MethodKernel kernel,
+                  bool (*parse)(const std::string&, MethodSpec&),
+                  std::string (*describe)(const MethodSpec&))
+{
+    MethodEntry e;
+    e.methods = {method};
+    e.syntax = syntax;
+    e.kernel = kernel;
+    e.parse = parse;
+    e.describe = describe;
+    return e;
+}
+
+const std::vector<NamedSpectrum>& Fit3x3Training()
+{
+    return TrainingSet().samples;
+}
+
+std::string DescribeRootPoly(const MethodSpec& m)
+{
+    return std::string("Root-polynomial regression of degree ") + (m.degree == 3 ? "3" : "2") +
+           " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
+           "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
+           "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
+}
+
+std::string DescribeRootPolyCamera(const MethodSpec& m)
+{
+    return std::string("For plates made with one fixed ") + m.idtLightName + " IDT of camera " +
+           (m.camera ? m.camera->name() : std::string("(none)")) +
+           " and white-balance gains: that IDT inverted, then a root polynomial of degree " +
+           (m.degree == 3 ? "3" : "2") +
+           " fitted from the camera's record under the source light to the target (205 "
+           "measured remittances): not linear, baked into a 3D LUT with a log2 shaper.";
+}
+
 std::vector<MethodEntry> MakeMethods()
 {
     using K = MethodKernel;
-    // clang-format off
-    return {
-        {{ChangeMethod::NONE}, "none", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(NONE, "none"),
-         BANDLIGHT_TEXT("Identity: the image is left as it is (the baseline every method is "
-                        "compared with)."),
-         &detail::IdentityFit, {"none"}, {"none"}},
-        {{ChangeMethod::VON_KRIES}, "vonkries", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(VON_KRIES, "vonkries"),
-         BANDLIGHT_TEXT("von Kries scaling of XYZ by the ratio of the two white points: exact "
-                        "on white, the crudest chromatic adaptation for colours."),
-         &detail::AdaptationFit, {"vonkries"}, {"vonkries"}},
-        {{ChangeMethod::BRADFORD}, "bradford", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(BRADFORD, "bradford"),
-         BANDLIGHT_TEXT("Bradford chromatic adaptation (linearised): exact on white; the usual "
-                        "white-balance matrix, good for broadband lights."),
-         &detail::AdaptationFit, {"bradford"}, {"bradford"}},
-        {{ChangeMethod::CAT02}, "cat02", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(CAT02, "cat02"),
-         BANDLIGHT_TEXT("CAT02 chromatic adaptation (CIECAM02): exact on white; similar to "
-                        "Bradford."),
-         &detail::AdaptationFit, {"cat02"}, {"cat02"}},
-        {{ChangeMethod::BAND, ChangeMethod::BAND_WP},
-         "band3, band3-wp, bandN, bandN-wp, bandsE0-E1-...-En[-wp]", K::MATRIX, false, false,
-         &ParseBand, &DescribeBand, &detail::BandFit,
-         {"band3", "band3-wp"}, {"band3", "band3-wp", "band6", "band6-wp"}},
-        {{ChangeMethod::FIT3X3}, "fit3x3", K::MATRIX, true, false,
-         BANDLIGHT_EXACT(FIT3X3, "fit3x3"),
-         BANDLIGHT_TEXT("3x3 fitted by least squares on training remittances (TCS01-08 and 100 "
-                        "smooth random ones), exact on white."),
-         &detail::LeastSquaresFit, {}, {"fit3x3"}},
-        {{ChangeMethod::PREFILTER}, "prefilter", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(PREFILTER, "prefilter"),
-         BANDLIGHT_TEXT("von Kries in the sharpened primaries of spectral prefiltering (Ward & "
-                        "Eydelberg-Vileshin 2002, Sharp sensors): exact on white."),
-         &detail::AdaptationFit, {}, {"prefilter"}},
-        {{ChangeMethod::METAMER}, "metamer", K::MATRIX, false, false,
-         BANDLIGHT_EXACT(METAMER, "metamer"),
-         BANDLIGHT_TEXT("The smoothest remittance that reproduces the pixel under the first "
-                        "light, re-lit under the second: one 3x3, exact on white."),
-         &detail::MetamerFit, {}, {"metamer"}},
-        {{ChangeMethod::UPSAMPLE}, "upsample", K::UPSAMPLE, false, false,
-         BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
-         BANDLIGHT_TEXT("A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika 2019 "
-                        "sigmoid polynomial), re-lit spectrally: not linear, baked into a 3D LUT "
-                        "with a log2 shaper."),
-         nullptr, {}, {"upsample"}},
-        {{ChangeMethod::ROOTPOLY}, "rootpoly, rootpoly3", K::ROOTPOLY, true, false,
-         [](const std::string& n, MethodSpec& s)
-         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY, ""); },
-         [](const MethodSpec& m) -> std::string
-         {
-             return std::string("Root-polynomial regression of degree ") +
-                    (m.degree == 3 ? "3" : "2") +
-                    " (Finlayson, Mackiewicz & Hurlbert 2015) fitted in CIELAB on 205 measured "
-                    "remittances (rawtoaces' 190 and the 15 TCS), exact on white and exposure "
-                    "invariant: not linear, baked into a 3D LUT with a log2 shaper.";
-         },
-         nullptr, {}, {"rootpoly", "rootpoly3"}},
-        {{ChangeMethod::ROOTPOLY_CAMERA}, "rootpoly-camera, rootpoly3-camera", K::ROOTPOLY, false,
-         true,
-         [](const std::string& n, MethodSpec& s)
-         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY_CAMERA, "-camera"); },
-         [](const MethodSpec& m) -> std::string
-         {
-             return std::string("For plates made with one fixed ") + m.idtLightName +
-                    " IDT of camera " + (m.camera ? m.camera->name() : std::string("(none)")) +
-                    " and white-balance gains: that IDT inverted, then a root polynomial of "
-                    "degree " +
-                    (m.degree == 3 ? "3" : "2") +
-                    " fitted from the camera's record under the source light to the target "
-                    "(205 measured remittances): not linear, baked into a 3D LUT with a log2 "
-                    "shaper.";
-         },
-         nullptr, {}, {}},
-        {{ChangeMethod::SPECTRAL}, "spectral", K::SPECTRAL, false, false,
-         BANDLIGHT_EXACT(SPECTRAL, "spectral"),
-         BANDLIGHT_TEXT("The exact spectral answer for known remittances: the reference."),
-         nullptr, {}, {}},
-    };
-    // clang-format on
+    std::vector<MethodEntry> all;
+
+    MethodEntry none = Entry(ChangeMethod::NONE, "none", K::MATRIX, BANDLIGHT_EXACT(NONE, "none"),
+                             BANDLIGHT_TEXT("Identity: the image is left as it is (the baseline "
+                                            "every method is compared with)."));
+    none.litMatrix = &detail::IdentityFit;
+    none.identity = true;
+    none.configDefaults = {"none"};
+    none.accuracyDefaults = {"none"};
+    all.push_back(none);
+
+    MethodEntry vonKries =
+        Entry(ChangeMethod::VON_KRIES, "vonkries", K::MATRIX, BANDLIGHT_EXACT(VON_KRIES, "vonkries"),
+              BANDLIGHT_TEXT("von Kries scaling of XYZ by the ratio of the two white points: "
+                             "exact on white, the crudest chromatic adaptation for colours."));
+    vonKries.litMatrix = &detail::AdaptationFit;
+    vonKries.adaptation = AdaptationMethod::XYZ_SCALING;
+    vonKries.configDefaults = {"vonkries"};
+    vonKries.accuracyDefaults = {"vonkries"};
+    all.push_back(vonKries);
+
+    MethodEntry bradford =
+        Entry(ChangeMethod::BRADFORD, "bradford", K::MATRIX, BANDLIGHT_EXACT(BRADFORD, "bradford"),
+              BANDLIGHT_TEXT("Bradford chromatic adaptation (linearised): exact on white; the "
+                             "usual white-balance matrix, good for broadband lights."));
+    bradford.litMatrix = &detail::AdaptationFit;
+    bradford.adaptation = AdaptationMethod::BRADFORD;
+    bradford.configDefaults = {"bradford"};
+    bradford.accuracyDefaults = {"bradford"};
+    all.push_back(bradford);
+
+    MethodEntry cat02 =
+        Entry(ChangeMethod::CAT02, "cat02", K::MATRIX, BANDLIGHT_EXACT(CAT02, "cat02"),
+              BANDLIGHT_TEXT("CAT02 chromatic adaptation (CIECAM02): exact on white; similar to "
+                             "Bradford."));
+    cat02.litMatrix = &detail::AdaptationFit;
+    cat02.adaptation = AdaptationMethod::CAT02;
+    cat02.configDefaults = {"cat02"};
+    cat02.accuracyDefaults = {"cat02"};
+    all.push_back(cat02);
+
+    MethodEntry band = Entry(ChangeMethod::BAND,
+                             "band3, band3-wp, bandN, bandN-wp, bandsE0-E1-...-En[-wp]", K::MATRIX,
+                             &ParseBand, &DescribeBand);
+    band.methods.push_back(ChangeMethod::BAND_WP);
+    band.litMatrix = &detail::BandFit;
+    band.usesBands = true;
+    band.configDefaults = {"band3", "band3-wp"};
+    band.accuracyDefaults = {"band3", "band3-wp", "band6", "band6-wp"};
+    all.push_back(band);
+
+    MethodEntry fit3x3 =
+        Entry(ChangeMethod::FIT3X3, "fit3x3", K::MATRIX, BANDLIGHT_EXACT(FIT3X3, "fit3x3"),
+              BANDLIGHT_TEXT("3x3 fitted by least squares on training remittances (TCS01-08 and "
+                             "100 smooth random ones), exact on white."));
+    fit3x3.litMatrix = &detail::LeastSquaresFit;
+    fit3x3.defaultTraining = &Fit3x3Training;
+    fit3x3.takesTraining = true;
+    fit3x3.accuracyDefaults = {"fit3x3"};
+    all.push_back(fit3x3);
+
+    MethodEntry prefilter =
+        Entry(ChangeMethod::PREFILTER, "prefilter", K::MATRIX,
+              BANDLIGHT_EXACT(PREFILTER, "prefilter"),
+              BANDLIGHT_TEXT("von Kries in the sharpened primaries of spectral prefiltering (Ward "
+                             "& Eydelberg-Vileshin 2002, Sharp sensors): exact on white."));
+    prefilter.litMatrix = &detail::AdaptationFit;
+    prefilter.adaptation = AdaptationMethod::SHARP;
+    prefilter.accuracyDefaults = {"prefilter"};
+    all.push_back(prefilter);
+
+    MethodEntry metamer =
+        Entry(ChangeMethod::METAMER, "metamer", K::MATRIX, BANDLIGHT_EXACT(METAMER, "metamer"),
+              BANDLIGHT_TEXT("The smoothest remittance that reproduces the pixel under the first "
+                             "light, re-lit under the second: one 3x3, exact on white."));
+    metamer.litMatrix = &detail::MetamerFit;
+    metamer.accuracyDefaults = {"metamer"};
+    all.push_back(metamer);
+
+    MethodEntry upsample =
+        Entry(ChangeMethod::UPSAMPLE, "upsample", K::UPSAMPLE, BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
+              BANDLIGHT_TEXT("A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika "
+                             "2019 sigmoid polynomial), re-lit spectrally: not linear, baked into "
+                             "a 3D LUT with a log2 shaper."));
+    upsample.pixelForm = &detail::UpsampleForm;
+    upsample.directForm = "direct-fit";
+    upsample.accuracyDefaults = {"upsample"};
+    all.push_back(upsample);
+
+    MethodEntry rootpoly = Entry(
+        ChangeMethod::ROOTPOLY, "rootpoly, rootpoly3", K::ROOTPOLY,
+        [](const std::string& n, MethodSpec& s)
+        { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY, ""); },
+        &DescribeRootPoly);
+    rootpoly.pixelForm = &detail::RootPolyForm;
+    rootpoly.defaultTraining = &RootPolynomialTraining;
+    rootpoly.takesTraining = true;
+    rootpoly.directForm = "native";
+    rootpoly.accuracyDefaults = {"rootpoly", "rootpoly3"};
+    all.push_back(rootpoly);
+
+    MethodEntry rootpolyCamera = Entry(
+        ChangeMethod::ROOTPOLY_CAMERA, "rootpoly-camera, rootpoly3-camera", K::ROOTPOLY,
+        [](const std::string& n, MethodSpec& s)
+        { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY_CAMERA, "-camera"); },
+        &DescribeRootPolyCamera);
+    rootpolyCamera.pixelForm = &detail::RootPolyCameraForm;
+    rootpolyCamera.defaultTraining = &RootPolynomialTraining;
+    rootpolyCamera.needsCamera = true;
+    rootpolyCamera.directForm = "native";
+    rootpolyCamera.cameraDefaults = {"rootpoly-camera"};
+    all.push_back(rootpolyCamera);
+
+    MethodEntry spectral =
+        Entry(ChangeMethod::SPECTRAL, "spectral", K::SPECTRAL, BANDLIGHT_EXACT(SPECTRAL, "spectral"),
+              BANDLIGHT_TEXT("The exact spectral answer for known remittances: the reference."));
+    all.push_back(spectral);
+    return all;
 }
 
 std::vector<std::string> Collect(std::vector<const char*> MethodEntry::*list)
@@ -238,6 +315,16 @@ const MethodEntry& FindMethod(ChangeMethod method)
     throw Exception("method " + std::to_string(int(method)) + " is not in the registry");
 }
 
+const MethodEntry& MethodSpec::entry() const
+{
+    return FindMethod(method);
+}
+
+bool MethodSpec::usesBands() const
+{
+    return entry().usesBands;
+}
+
 bool MethodSpec::isLinear() const noexcept
 {
     for (const MethodEntry& e : Methods())
@@ -248,6 +335,61 @@ bool MethodSpec::isLinear() const noexcept
         }
     }
     return false;
+}
+
+const MethodEntry& FindMethod(const std::string& name)
+{
+    return FindMethod(ParseMethod(name).method);
+}
+
+std::string ReferenceMethodName()
+{
+    for (const MethodEntry& e : Methods())
+    {
+        if (e.isReference())
+        {
+            return e.syntax;
+        }
+    }
+    throw Exception("the method registry has no reference method");
+}
+
+void RequireCamera(const MethodSpec& method, bool haveCamera)
+{
+    if (method.entry().needsCamera && !haveCamera)
+    {
+        throw ParameterError("method '" + method.name +
+                             "' needs the camera that shot the plates ({camera=}FILE)");
+    }
+}
+
+void RequireCamera(const MethodSpec& method)
+{
+    RequireCamera(method, bool(method.camera));
+}
+
+MethodSpec WithCamera(MethodSpec method, const std::shared_ptr<const SpectralCamera>& camera,
+                      const Light& idtLight)
+{
+    method.camera = camera;
+    if (method.entry().needsCamera)
+    {
+        RequireCamera(method);
+        method.idtLightName = idtLight.name;
+        method.idtLight = idtLight.spectrum;
+    }
+    return method;
+}
+
+const std::vector<NamedSpectrum>& TrainingOf(const MethodSpec& method)
+{
+    static const std::vector<NamedSpectrum> none;
+    if (!method.training.empty())
+    {
+        return method.training;
+    }
+    const MethodEntry& e = method.entry();
+    return e.defaultTraining ? e.defaultTraining() : none;
 }
 
 MethodSpec ParseMethod(const std::string& name)
@@ -279,6 +421,12 @@ const std::vector<std::string>& LinearMethodNames()
 const std::vector<std::string>& AllMethodNames()
 {
     static const std::vector<std::string> names = Collect(&MethodEntry::accuracyDefaults);
+    return names;
+}
+
+const std::vector<std::string>& CameraMethodNames()
+{
+    static const std::vector<std::string> names = Collect(&MethodEntry::cameraDefaults);
     return names;
 }
 

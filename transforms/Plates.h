@@ -7,6 +7,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/RgbSpaces.h"
 #include "spectral/Spectrum.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -48,7 +49,7 @@ struct Plates
 
 /// Parses --plates (lit, balanced) and --adaptation (cat02, bradford);
 /// throws Exception naming the choices otherwise.
-Plates ParsePlates(const std::string& convention, const std::string& adaptation = "cat02");
+Plates ParsePlates(const std::string& convention, const std::string& adaptation = defaults::ADAPTATION);
 
 /// "cat02" or "bradford" (other adaptations are not offered for plates).
 std::string AdaptationName(AdaptationMethod method);

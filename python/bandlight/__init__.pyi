@@ -284,7 +284,7 @@ def config(out: Optional[StrPath] = None, *, working_space: Optional[str] = None
            camera: Optional[StrPath] = None, camera_idt: str = "D55") -> OCIO.Config: ...
 def identify_scene_linear(config: Union[StrPath, OCIO.Config]) -> Tuple[str, str]: ...
 def lut(path: StrPath, src: LightLike, dst: LightLike, method: str = "bradford", *,
-        format: str = "clf", size: Optional[int] = None, shaper: str = "log2",
+        format: Optional[str] = None, size: Optional[int] = None, shaper: str = "log2",
         encoding: str = "linear", working_space: str = "acescg", observer: ObserverLike = "1931",
         training: Optional[RemittancesLike] = None,
         plates: str = "balanced", adaptation: str = "cat02",

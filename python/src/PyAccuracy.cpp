@@ -5,6 +5,7 @@
 
 #include "PyBandlight.h"
 #include "jobs/AccuracyJob.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -112,7 +113,7 @@ void AddAccuracy(py::module_& m)
           py::arg("observer") = defaults::OBSERVER, py::arg("exposures") = py::none(),
           py::arg("lut_size") = defaults::CONFIG_LUT_SIZE, py::arg("ideal_only") = false,
           py::arg("cross_validation") = true, py::arg("floor") = true, py::arg("cost") = true,
-          py::arg("progress") = py::none(), py::arg("plates") = "both",
+          py::arg("progress") = py::none(), py::arg("plates") = defaults::ACCURACY_PLATES,
           py::arg("adaptation") = defaults::ADAPTATION, py::arg("camera") = py::none(),
           py::arg("camera_idt") = defaults::IDT_LIGHT, py::arg("json") = py::none(),
           py::arg("plot") = py::none(), R"doc(

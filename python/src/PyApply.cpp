@@ -4,6 +4,7 @@
 #include "PyBandlight.h"
 #include "jobs/ApplyJob.h"
 #include "jobs/Frames.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -31,6 +32,33 @@ py::dict Apply(const py::object& input, const py::object& output,
     if (src.is_none() != dst.is_none())
     {
         throw ParameterError("give both {src} and {dst}, or a {look}");
+    }
+    if (!r.look.empty())
+    {
+        // A look is applied as its config holds it: the keywords of a change
+        // of light would be ignored, so they are refused by name.
+        std::string given;
+        const auto add = [&](bool on, const char* name)
+        {
+            if (on)
+            {
+                given += std::string(given.empty() ? "" : ", ") + name;
+            }
+        };
+        add(!src.is_none(), "src");
+        add(!dst.is_none(), "dst");
+        add(method != defaults::METHOD, "method");
+        add(working != defaults::WORKING_SPACE, "working_space");
+        add(!training.is_none(), "training");
+        add(plates != defaults::PLATES, "plates");
+        add(adaptation != defaults::ADAPTATION, "adaptation");
+        add(!camera.is_none(), "camera");
+        add(cameraIdt != defaults::IDT_LIGHT, "camera_idt");
+        if (!given.empty())
+        {
+            throw ParameterError("{look} applies a look of {config} as it is: " + given +
+                                 " do not apply to it (give the look, or the change of light)");
+        }
     }
     if (r.look.empty() && !src.is_none())
     {
@@ -80,7 +108,7 @@ The frames a frame set names, as ``--frames`` reads it: "1001-1100",
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
           py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
-          py::arg("threads") = 0, py::arg("skip_existing") = false, py::arg("keep_going") = false,
+          py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false, py::arg("keep_going") = false,
           (std::string(R"doc(
 Applies a look, or an illuminant change, to an image file or a frame
 sequence through OpenImageIO: the job of ``bandlight apply``. Returns

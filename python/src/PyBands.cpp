@@ -3,6 +3,7 @@
 // function band matrices, the band <-> working-space matrices, the tables.
 #include "PyBandlight.h"
 #include "spectral/Illuminants.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -91,8 +92,8 @@ means the lecture's VB [400, 500), VG [500, 600), VR [600, 700).
              "three).")
         .def_static("lecture", &BandSet::Lecture,
                     "The lecture's three bands: VB [400, 500), VG [500, 600), VR [600, 700).")
-        .def_static("equal", &BandSet::Equal, py::arg("n"), py::arg("min_nm") = 400.0,
-                    py::arg("max_nm") = 700.0,
+        .def_static("equal", &BandSet::Equal, py::arg("n"), py::arg("min_nm") = defaults::EQUAL_BANDS_MIN_NM,
+                    py::arg("max_nm") = defaults::EQUAL_BANDS_MAX_NM,
                     "n equal bands over [min_nm, max_nm), named B1..Bn (VB/VG/VR for the "
                     "lecture's range with n = 3).")
         .def_static(
@@ -145,7 +146,7 @@ means the lecture's VB [400, 500), VG [500, 600), VR [600, 700).
                 IlluminantBands(ToLight(illuminant).spectrum, ToBands(bands), ParseBandRule(rule)));
         },
         py::arg("illuminant"), py::arg("bands") = py::none(), py::kw_only(),
-        py::arg("rule") = "lecture", R"doc(
+        py::arg("rule") = defaults::BAND_RULE, R"doc(
 Illuminant band means (I_B, I_G, I_R, ...) normalised to the largest band = 1
 (SPEC 1.2). illuminant: a name or file (str), a file (os.PathLike) or a
 Spectrum. rule: "lecture" (sample average) or "exact".
@@ -174,7 +175,7 @@ Spectrum. rule: "lecture" (sample average) or "exact".
             return ToArray(rows);
         },
         py::arg("reflectance"), py::arg("bands") = py::none(), py::kw_only(),
-        py::arg("rule") = "lecture", R"doc(
+        py::arg("rule") = defaults::BAND_RULE, R"doc(
 Remittance band means (O_B, O_G, O_R, ...), raw (not normalised, so 0 <= O <= 1).
 A Spectrum gives shape (bands,); a test-colour name or file ("TCS", "chart.sp")
 or a sequence of Spectrum gives one row per surface, (N, bands).
@@ -187,8 +188,8 @@ or a sequence of Spectrum gives one row per surface, (N, bands).
             return ToArray(MatchingBandMatrix(ToBands(bands), ToMatchingSet(set),
                                               ToObserver(observer), ParseBandRule(rule)));
         },
-        py::arg("bands") = py::none(), py::kw_only(), py::arg("set") = "xyz",
-        py::arg("observer") = "1931", py::arg("rule") = "lecture", R"doc(
+        py::arg("bands") = py::none(), py::kw_only(), py::arg("set") = defaults::MATCHING_SET,
+        py::arg("observer") = defaults::OBSERVER, py::arg("rule") = defaults::BAND_RULE, R"doc(
 The row-normalised matching-function band matrix, shape (3, bands): entry
 (k, b) is the band mean of matching function k in band b divided by its row's
 sum, so an equal-energy light on an ideal white gives (1, 1, 1) (SPEC 1.2).
@@ -204,8 +205,8 @@ set: "xyz" (x_bar y_bar z_bar) or "ebu_rgb" (r_bar g_bar b_bar, EBU 3213, D65).
             return py::make_tuple(ToArray(Eigen::MatrixXd(b.toColour)),
                                   ToArray(Eigen::MatrixXd(b.fromColour)), b.conditionNumber);
         },
-        py::arg("bands") = py::none(), py::kw_only(), py::arg("set") = "xyz",
-        py::arg("observer") = "1931", py::arg("rule") = "lecture", R"doc(
+        py::arg("bands") = py::none(), py::kw_only(), py::arg("set") = defaults::MATCHING_SET,
+        py::arg("observer") = defaults::OBSERVER, py::arg("rule") = defaults::BAND_RULE, R"doc(
 (to_colour, from_colour, condition_number) of a three-band set: the band ->
 XYZ (or EBU RGB) 3x3, its inverse, and its 2-norm condition number (4.35 for
 the lecture's bands, CIE 1931). Raises ValueError for other than three bands
@@ -218,8 +219,8 @@ or a singular matrix.
             return ToArray(
                 WorkingToBandMatrix(ToBands(bands), FindRgbSpace(working), ToObserver(observer)));
         },
-        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = "acescg",
-        py::arg("observer") = "1931",
+        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = defaults::WORKING_SPACE,
+        py::arg("observer") = defaults::OBSERVER,
         "Working RGB -> band values, shape (bands, 3): the pseudo-inverse of the\n"
         "row-normalised band matrix times the working space's RGB -> XYZ.");
     m.def(
@@ -229,8 +230,8 @@ or a singular matrix.
             return ToArray(
                 BandToWorkingMatrix(ToBands(bands), FindRgbSpace(working), ToObserver(observer)));
         },
-        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = "acescg",
-        py::arg("observer") = "1931", "Band values -> working RGB, shape (3, bands).");
+        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = defaults::WORKING_SPACE,
+        py::arg("observer") = defaults::OBSERVER, "Band values -> working RGB, shape (3, bands).");
     m.def(
         "condition_number",
         [](const py::handle& matrix)
@@ -256,7 +257,7 @@ or a singular matrix.
         "Band methods refuse band sets above MAX_BAND_CONDITION.");
     m.attr("MAX_BAND_CONDITION") = MAX_BAND_CONDITION;
     m.def("tables", &Tables, py::arg("bands") = py::none(), py::kw_only(),
-          py::arg("observer") = "1931", py::arg("rule") = "lecture", R"doc(
+          py::arg("observer") = defaults::OBSERVER, py::arg("rule") = defaults::BAND_RULE, R"doc(
 The lecture's three tables, as ``bandlight tables --json`` prints them: a dict
 with "bands", "observer", "rule", "matching_functions" (rows summing to 1, CIE
 xyz and EBU RGB), "condition_number", "illuminants" (band means, largest = 1,

@@ -6,6 +6,7 @@
 #include "jobs/ColourJobs.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/ColourRendering.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -171,7 +172,7 @@ void AddColorimetry(py::module_& m)
             return Integrate(integ, reflectance);
         },
         py::arg("illuminant"), py::arg("reflectance") = py::none(), py::kw_only(),
-        py::arg("observer") = "1931", R"doc(
+        py::arg("observer") = defaults::OBSERVER, R"doc(
 CIE XYZ, the perfect white reflector at Y = 100 (CIE 15:2004 7.1), as
 ``bandlight xyz`` computes it.
 
@@ -193,7 +194,7 @@ Call it with a Spectrum (shape (3,)), a sequence of Spectrum (N, 3), or an
 array of remittance samples (..., K) on ``wavelengths`` (..., 3); arrays are
 integrated with the GIL released.
 )doc")
-        .def(py::init(&MakeIntegrator), py::arg("illuminant"), py::arg("observer") = "1931",
+        .def(py::init(&MakeIntegrator), py::arg("illuminant"), py::arg("observer") = defaults::OBSERVER,
              "The weights of a light (a name or file, an os.PathLike or a Spectrum) on its own\n"
              "grid, for observer \"1931\" or \"1964\".")
         .def_property_readonly(
@@ -291,8 +292,8 @@ integrated with the GIL released.
             return ReducePairs(
                 a, b, [=](const Vec3& p, const Vec3& q) { return DeltaE2000(p, q, kL, kC, kH); });
         },
-        py::arg("lab1"), py::arg("lab2"), py::arg("kL") = 1.0, py::arg("kC") = 1.0,
-        py::arg("kH") = 1.0, R"doc(
+        py::arg("lab1"), py::arg("lab2"), py::arg("kL") = defaults::CIEDE2000_K, py::arg("kC") = defaults::CIEDE2000_K,
+        py::arg("kH") = defaults::CIEDE2000_K, R"doc(
 CIEDE2000 (CIE 142-2001, with the notes of Sharma, Wu & Dalal 2005) of
 CIELAB colour pairs (..., 3) broadcast together: a float for one pair, else
 an array of shape (...). Agrees with all 34 pairs of Sharma's table to 5e-5.
@@ -341,7 +342,7 @@ consider Ra meaningful. Raises ValueError for a CCT outside 1000-25000 K.
                 Eigen::MatrixXd(AdaptationMatrix(ToVec3(src, "src_white"), ToVec3(dst, "dst_white"),
                                                  ParseAdaptationMethod(method))));
         },
-        py::arg("src_white"), py::arg("dst_white"), py::arg("method") = "bradford", R"doc(
+        py::arg("src_white"), py::arg("dst_white"), py::arg("method") = defaults::WHITE_ADAPTATION, R"doc(
 The 3x3 that maps XYZ seen under src_white to the corresponding XYZ under
 dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
 "bradford", "cat02" or "sharp". Whites on any common scale.
@@ -358,6 +359,7 @@ dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
                 d["name"] = s.name;
                 d["display_name"] = s.displayName;
                 d["description"] = s.description;
+                d["aliases"] = s.aliases;
                 d["primaries"] =
                     py::make_tuple(py::make_tuple(c.rx, c.ry), py::make_tuple(c.gx, c.gy),
                                    py::make_tuple(c.bx, c.by));
@@ -366,17 +368,19 @@ dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
             }
             return out;
         },
-        "The built-in linear RGB spaces (ebu3213, rec709, rec2020, p3-d65, acescg,\n"
-        "aces2065-1): name, display_name, description, primaries ((x, y) of R, G, B)\n"
-        "and white (x, y).");
+        ("The built-in linear RGB spaces (" + RgbSpaceChoices() +
+         "): name, display_name, description, aliases, primaries ((x, y) of R, G, B)\n"
+         "and white (x, y).")
+            .c_str());
     m.def(
         "rgb_to_xyz_matrix",
         [](const std::string& space)
         { return ToArray(Eigen::MatrixXd(RgbToXyzMatrix(FindRgbSpace(space).chromaticities))); },
-        py::arg("space") = "acescg",
-        "The RGB -> XYZ matrix of a built-in space (SMPTE RP 177): RGB (1, 1, 1) is its\n"
-        "white with Y = 1. space: a name or alias (\"acescg\", \"ap1\", \"srgb\",\n"
-        "\"lin-rec709\", \"rec2020\", \"p3-d65\", \"aces2065-1\", \"ebu3213\").");
+        py::arg("space") = defaults::WORKING_SPACE,
+        ("The RGB -> XYZ matrix of a built-in space (SMPTE RP 177): RGB (1, 1, 1) is its\n"
+         "white with Y = 1. space: a name or alias (" +
+         RgbSpaceChoices() + "; aliases such as \"ap1\" and \"lin-rec709\").")
+            .c_str());
 }
 
 }  // namespace bandlight::python

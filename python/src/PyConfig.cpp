@@ -9,6 +9,7 @@
 #include "jobs/ConfigJob.h"
 #include "jobs/LutJob.h"
 #include "plugin/SceneLinearEvidence.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -57,7 +58,10 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
         r.methods = ToNames(methods);
     }
     r.workingSpace = working.value_or("");
-    r.out = out ? out->string() : "";
+    if (out)
+    {
+        r.out = out->string();
+    }
     r.lutSize = lutSize;
     r.basePaths = basePaths;
     if (!base.is_none())
@@ -69,18 +73,18 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
         PlatesArgs{plates, adaptation, camera, cameraIdt}.loadCamera();  // OSError when unreadable
     }
     const auto make = [&] { return jobs::MakeConfig(r, Warnings()); };
-    return (r.out.empty() ? make() : WritingFile(r.out, true, make)).package.config;
+    return (!r.out ? make() : WritingFile(*r.out, true, make)).package.config;
 }
 
 py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
-             const std::string& method, const std::string& format, const std::optional<int>& size,
+             const std::string& method, const std::optional<std::string>& format, const std::optional<int>& size,
              const std::string& shaper, const std::string& encoding, const std::string& workingName,
              const py::object& observerArg, const py::object& training, const std::string& plates,
              const std::string& adaptation, const py::object& camera, const std::string& cameraIdt)
 {
     jobs::LutRequest r;
     r.out = pathArg.string();
-    r.format = format;
+    r.format = format.value_or("");
     r.size = size;
     r.shaper = shaper;
     r.encoding = encoding;
@@ -165,7 +169,7 @@ out or "absolute".
 )doc");
     m.def("lut", &Lut, py::arg("path"), py::arg("src"), py::arg("dst"),
           py::arg("method") = defaults::METHOD, py::kw_only(),
-          py::arg("format") = defaults::LUT_FORMAT, py::arg("size") = py::none(),
+          py::arg("format") = py::none(), py::arg("size") = py::none(),
           py::arg("shaper") = defaults::LUT_SHAPER, py::arg("encoding") = defaults::LUT_ENCODING,
           py::arg("working_space") = defaults::WORKING_SPACE,
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
@@ -178,7 +182,8 @@ lut`` does, through OpenColorIO's own writers. Returns {"lut": path,
 bool, "shaper_description": str or None, "encoding": str,
 "encoding_description": str}.
 
-format: clf, ctf (the exact matrix for linear methods, unless size is
+format: None (the format follows the path's extension: .clf, .ctf, .cube,
+.spi3d, .3dl, .csp, .lut), or one of clf, ctf (the exact matrix for linear methods, unless size is
 given), cube, spi3d, 3dl (scene-linear HDR through the log2 shaper; the
 shaper is written beside as <stem>.shaper.clf: apply it before the LUT and
 its inverse after), resolve_cube, csp, houdini (display-referred [0, 1] data,

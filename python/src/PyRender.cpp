@@ -5,6 +5,7 @@
 #include "jobs/RenderJob.h"
 #include "render/ScenePlan.h"
 #include "render/SceneRenderer.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -52,7 +53,7 @@ void AddRender(py::module_& m)
             return ToImage(std::move(img));
         },
         py::arg("scene") = py::none(), py::kw_only(), py::arg("text") = py::none(),
-        py::arg("source") = "<scene>", py::arg("mode") = py::none(), py::arg("threads") = 0,
+        py::arg("source") = defaults::SCENE_SOURCE, py::arg("mode") = py::none(), py::arg("threads") = defaults::THREADS,
         py::arg("unplanned") = false, R"doc(
 Renders a YAML scene (docs/scenes.md) as ``bandlight render`` does and
 returns the image, float32 (height, width, channels), top row first: linear
@@ -75,7 +76,7 @@ any error in the scene.
             return unplanned ? ExplainUnplanned(s) : ExplainPlan(s, PlanScene(s));
         },
         py::arg("scene") = py::none(), py::kw_only(), py::arg("text") = py::none(),
-        py::arg("source") = "<scene>", py::arg("mode") = py::none(), py::arg("unplanned") = false,
+        py::arg("source") = defaults::SCENE_SOURCE, py::arg("mode") = py::none(), py::arg("unplanned") = false,
         "What the planner evaluates for a scene, and why (``bandlight render --explain``).");
 }
 

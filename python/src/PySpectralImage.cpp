@@ -3,6 +3,7 @@
 // and spectral EXRs converted to RGB EXRs as `bandlight spectral` does.
 #include "PyBandlight.h"
 #include "jobs/SpectralJob.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -168,8 +169,8 @@ lit. observer: "1931" or "1964". sampling: "auto", "points" or "buckets".
 void AddSpectralImage(py::module_& m)
 {
     m.def("read_spectral_image", &ReadSpectral, py::arg("path"), py::kw_only(),
-          py::arg("channels") = py::none(), py::arg("kind") = "emissive",
-          py::arg("sampling") = "auto", R"doc(
+          py::arg("channels") = py::none(), py::arg("kind") = defaults::SPECTRAL_KIND,
+          py::arg("sampling") = defaults::SPECTRAL_SAMPLING, R"doc(
 Reads a spectral EXR (the Fichet 2021 layout, pbrt-v4's spectral film, or
 channels named otherwise) through OpenImageIO. Returns (wavelengths in nm,
 a float32 array (height, width, n) of the spectra, the kind "emissive" or
@@ -178,11 +179,11 @@ a dict {channel: wavelength_nm} or a CSV file of them (of kind ``kind``).
 Bad files raise ValueError naming the file and the channel.
 )doc");
     m.def("spectral_to_rgb", &SpectralToRgb, py::arg("spectra"), py::arg("wavelengths"),
-          py::kw_only(), py::arg("kind") = "emissive", py::arg("src") = py::none(),
+          py::kw_only(), py::arg("kind") = defaults::SPECTRAL_KIND, py::arg("src") = py::none(),
           py::arg("dst") = py::none(), py::arg("working_space") = defaults::WORKING_SPACE,
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
-          py::arg("observer") = defaults::OBSERVER, py::arg("sampling") = "auto",
-          py::arg("threads") = 0,
+          py::arg("observer") = defaults::OBSERVER, py::arg("sampling") = defaults::SPECTRAL_SAMPLING,
+          py::arg("threads") = defaults::THREADS,
           (std::string(R"doc(
 Spectra (any shape ending in one axis of len(wavelengths) samples) to linear
 RGB in working_space, shape (..., 3), with the GIL released: one dot product
@@ -194,8 +195,8 @@ by default (sampling="buckets" for means over each sample's interval).
           py::arg("frames") = py::none(), py::arg("src") = py::none(), py::arg("dst") = py::none(),
           py::arg("working_space") = defaults::WORKING_SPACE, py::arg("plates") = defaults::PLATES,
           py::arg("adaptation") = defaults::ADAPTATION, py::arg("observer") = defaults::OBSERVER,
-          py::arg("channels") = py::none(), py::arg("kind") = "emissive",
-          py::arg("sampling") = "auto", py::arg("threads") = 0, py::arg("skip_existing") = false,
+          py::arg("channels") = py::none(), py::arg("kind") = defaults::SPECTRAL_KIND,
+          py::arg("sampling") = defaults::SPECTRAL_SAMPLING, py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false,
           py::arg("keep_going") = false,
           (std::string(R"doc(
 Converts a spectral EXR (or a frame sequence of them, with frames=) to an

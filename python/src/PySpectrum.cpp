@@ -6,6 +6,7 @@
 
 #include "PyBandlight.h"
 #include "spectral/Illuminants.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -209,7 +210,7 @@ left operand's grid) and scale (``2.0 * s``). They pickle.
             "band_means",
             [](const NamedSpectrum& s, const py::object& bands, const std::string& rule)
             { return ToArray(BandMeans(s.spectrum, ToBands(bands), ParseBandRule(rule))); },
-            py::arg("bands") = py::none(), py::arg("rule") = "lecture",
+            py::arg("bands") = py::none(), py::arg("rule") = defaults::BAND_RULE,
             "Band means m_b = (1/width) * integral over band b, one per band, not\n"
             "normalised. bands: a BandSet, edges in nm or \"400,500,600,700\"; None is the\n"
             "lecture's VB/VG/VR. rule: \"lecture\" (the average of the samples with\n"
@@ -310,7 +311,8 @@ or a malformed file (file and line), OSError for a file that cannot be read.
             }
             return NamedSpectrum{"BB" + Num(kelvin), Planckian(kelvin, start, step, count)};
         },
-        py::arg("kelvin"), py::arg("start") = 300.0, py::arg("step") = 5.0, py::arg("count") = 107,
+        py::arg("kelvin"), py::arg("start") = defaults::PLANCK_START_NM,
+        py::arg("step") = defaults::PLANCK_STEP_NM, py::arg("count") = defaults::PLANCK_COUNT,
         "A Planckian radiator at kelvin (0 < T <= 1e6 K), normalised to 100 at 560 nm as\n"
         "CIE tables are; 300-830 nm at 5 nm unless a grid is given.");
     m.def(
@@ -334,7 +336,7 @@ or a malformed file (file and line), OSError for a file that cannot be read.
                                                   {"r_bar", "g_bar", "b_bar"});
             return py::make_tuple(s[0], s[1], s[2]);
         },
-        py::arg("observer") = "1931", py::arg("set") = "xyz", R"doc(
+        py::arg("observer") = defaults::OBSERVER, py::arg("set") = defaults::MATCHING_SET, R"doc(
 The colour-matching functions of an observer as three Spectrum, 360-830 nm at 5 nm.
 
 observer: "1931" (CIE 1931 2 degree, Table T.4) or "1964" (CIE 1964 10 degree,
@@ -344,7 +346,7 @@ converted to the EBU Tech 3213 primaries, D65 white.
 )doc");
     m.def(
         "reflectances", [](const py::object& nameOrFile) { return ToReflectances(nameOrFile); },
-        py::arg("name_or_file") = "TCS", R"doc(
+        py::arg("name_or_file") = defaults::REFLECTANCES, R"doc(
 Remittances as ``bandlight --reflectance`` reads them, as a list of Spectrum.
 
 "TCS01" ... "TCS15" (case-insensitive) is one CIE 13.3 test colour sample
@@ -375,7 +377,7 @@ content, OSError for a file that cannot be read.
         "parse_spectra",
         [](const std::string& text, const std::string& source)
         { return ReadSpectraText(text, source); },
-        py::arg("text"), py::arg("source") = "<string>",
+        py::arg("text"), py::arg("source") = defaults::TEXT_SOURCE,
         "The same as read_spectra for text in memory; source names it in error messages.");
 }
 

@@ -11,6 +11,7 @@
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {
@@ -232,11 +233,11 @@ void AddTransforms(py::module_& m)
                 ToMethod(method, training, PlatesArgs{plates, adaptation, camera, cameraIdt}),
                 FindRgbSpace(working), ToObserver(observer), lutSize);
         },
-        py::arg("src"), py::arg("dst"), py::arg("method") = "bradford", py::kw_only(),
-        py::arg("working_space") = "acescg", py::arg("observer") = "1931", py::arg("lut_size") = 33,
-        py::arg("training") = py::none(), py::arg("plates") = "balanced",
-        py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-        py::arg("camera_idt") = "D55",
+        py::arg("src"), py::arg("dst"), py::arg("method") = defaults::METHOD, py::kw_only(),
+        py::arg("working_space") = defaults::WORKING_SPACE, py::arg("observer") = defaults::OBSERVER, py::arg("lut_size") = defaults::TRANSFORM_LUT_SIZE,
+        py::arg("training") = py::none(), py::arg("plates") = defaults::PLATES,
+        py::arg("adaptation") = defaults::ADAPTATION, py::arg("camera") = py::none(),
+        py::arg("camera_idt") = defaults::IDT_LIGHT,
         (std::string(R"doc(
 The illuminant change from src to dst as a PyOpenColorIO.GroupTransform, for
 images in the linear RGB space working_space: what ``bandlight lut`` and
@@ -262,10 +263,10 @@ Raises ValueError for an unknown method (the message lists them), for
                 from, to, ToMethod(method, training, PlatesArgs{plates, adaptation}),
                 FindRgbSpace(working), ToObserver(observer))));
         },
-        py::arg("src"), py::arg("dst"), py::arg("method") = "bradford", py::kw_only(),
-        py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-        py::arg("training") = py::none(), py::arg("plates") = "balanced",
-        py::arg("adaptation") = "cat02", R"doc(
+        py::arg("src"), py::arg("dst"), py::arg("method") = defaults::METHOD, py::kw_only(),
+        py::arg("working_space") = defaults::WORKING_SPACE, py::arg("observer") = defaults::OBSERVER,
+        py::arg("training") = py::none(), py::arg("plates") = defaults::PLATES,
+        py::arg("adaptation") = defaults::ADAPTATION, R"doc(
 The 3x3 in working_space that makes an image lit by src look lit by dst, for
 the linear methods (every method but upsample, rootpoly, rootpoly-camera and
 spectral). plates, adaptation: as illuminant_change (default balanced by
@@ -276,8 +277,8 @@ CAT02: balance(dst) . M . balance(src)^-1; "lit" gives M itself).
         [](const py::object& bands, const std::string& working,
            const py::object& observer) -> OCIO::GroupTransformRcPtr
         { return BandSpaceTransform(ToBands(bands), FindRgbSpace(working), ToObserver(observer)); },
-        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = "acescg",
-        py::arg("observer") = "1931", R"doc(
+        py::arg("bands") = py::none(), py::kw_only(), py::arg("working_space") = defaults::WORKING_SPACE,
+        py::arg("observer") = defaults::OBSERVER, R"doc(
 Working RGB -> the band space of a three-band set (radiometric band values;
 VB, VG, VR for the lecture's bands) as a PyOpenColorIO.GroupTransform.
 )doc");
@@ -301,7 +302,7 @@ VB, VG, VR for the lecture's bands) as a PyOpenColorIO.GroupTransform.
                                          ToObserver(observer));
         },
         py::arg("remittance"), py::arg("bands") = py::none(), py::kw_only(),
-        py::arg("working_space") = "acescg", py::arg("observer") = "1931", R"doc(
+        py::arg("working_space") = defaults::WORKING_SPACE, py::arg("observer") = defaults::OBSERVER, R"doc(
 The lecture's material tint as a PyOpenColorIO.GroupTransform: working RGB ->
 band space, band b times remittance[b] (R_diff), -> working RGB. remittance:
 one value per band in band order (VB, VG, VR: blue first), or a Spectrum
@@ -333,20 +334,20 @@ white-balanced plates, CAT02).
                      return MakeRelighter(src, dst, method, working, observer, training,
                                           PlatesArgs{plates, adaptation, camera, cameraIdt});
                  }),
-             py::arg("src"), py::arg("dst"), py::arg("method") = "bradford", py::kw_only(),
-             py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-             py::arg("training") = py::none(), py::arg("plates") = "balanced",
-             py::arg("adaptation") = "cat02", py::arg("camera") = py::none(),
-             py::arg("camera_idt") = "D55",
+             py::arg("src"), py::arg("dst"), py::arg("method") = defaults::METHOD, py::kw_only(),
+             py::arg("working_space") = defaults::WORKING_SPACE, py::arg("observer") = defaults::OBSERVER,
+             py::arg("training") = py::none(), py::arg("plates") = defaults::PLATES,
+             py::arg("adaptation") = defaults::ADAPTATION, py::arg("camera") = py::none(),
+             py::arg("camera_idt") = defaults::IDT_LIGHT,
              "src, dst: a name or file (str), a file (os.PathLike) or a Spectrum; method: any\n"
              "image method (not \"spectral\").")
         .def(py::pickle([](const PyRelighter& r) { return r.spec; }, &RelighterFromState),
              "Pickles by its specification (lights and training as spectra, the camera\n"
              "file by path), so dask.array.map_blocks(relighter.apply) runs on a cluster of\n"
              "processes: each worker makes the same relighter.")
-        .def("apply", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = 0,
+        .def("apply", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = defaults::THREADS,
              py::arg("out") = py::none(), kApplyDoc)
-        .def("__call__", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = 0,
+        .def("__call__", &Apply, py::arg("image"), py::kw_only(), py::arg("threads") = defaults::THREADS,
              py::arg("out") = py::none(), "The same as apply().")
         .def_property_readonly(
             "is_linear", [](const PyRelighter& r) { return r.relighter->isLinear(); },
@@ -380,11 +381,11 @@ white-balanced plates, CAT02).
                                                 PlatesArgs{plates, adaptation, camera, cameraIdt});
             return Apply(r, image, threads, out);
         },
-        py::arg("image"), py::arg("src"), py::arg("dst"), py::arg("method") = "bradford",
-        py::kw_only(), py::arg("working_space") = "acescg", py::arg("observer") = "1931",
-        py::arg("training") = py::none(), py::arg("threads") = 0, py::arg("out") = py::none(),
-        py::arg("plates") = "balanced", py::arg("adaptation") = "cat02",
-        py::arg("camera") = py::none(), py::arg("camera_idt") = "D55",
+        py::arg("image"), py::arg("src"), py::arg("dst"), py::arg("method") = defaults::METHOD,
+        py::kw_only(), py::arg("working_space") = defaults::WORKING_SPACE, py::arg("observer") = defaults::OBSERVER,
+        py::arg("training") = py::none(), py::arg("threads") = defaults::THREADS, py::arg("out") = py::none(),
+        py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
+        py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
         (std::string("Relighter(src, dst, method, ...).apply(image, threads=threads, out=out):\n") +
          kApplyDoc)
             .c_str());

@@ -63,8 +63,10 @@ TEST_CASE("illuminants resolve by built-in name or file, with notes on files", "
     Collect notes;
     const Light lamp = jobs::ResolveIlluminant(file, notes);
     CHECK(lamp.name == "lamp");
-    REQUIRE(notes.notes.size() == 1);
+    // ... and one that it is sampled every 10 nm, coarser than the CIE's 5.
+    REQUIRE(notes.notes.size() == 2);
     CHECK_THAT(notes.notes[0], Contains(file));
+    CHECK_THAT(notes.notes[1], Contains(file) && Contains("every 10 nm"));
 }
 
 TEST_CASE("remittances resolve by test-colour name or file", "[jobs]")

@@ -132,7 +132,9 @@ def test_chromatic_adaptation_and_rgb_spaces():
     spaces = {s["name"]: s for s in bandlight.rgb_spaces()}
     assert set(spaces) >= {"acescg", "rec709", "rec2020", "p3-d65", "aces2065-1", "ebu3213"}
     assert spaces["rec709"]["primaries"][0] == pytest.approx((0.64, 0.33))
-    m = bandlight.rgb_to_xyz_matrix("srgb")
+    with pytest.raises(ValueError, match="rec709.*colorspace=srgb"):
+        bandlight.rgb_to_xyz_matrix("srgb")  # the encoding, not a linear space
+    m = bandlight.rgb_to_xyz_matrix("lin-srgb")
     np.testing.assert_allclose(m[1], [0.2126, 0.7152, 0.0722], atol=1e-4)
     # ACEScg: S-2014-004's matrix.
     np.testing.assert_allclose(bandlight.rgb_to_xyz_matrix("ap1")[0],

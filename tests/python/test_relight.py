@@ -119,7 +119,7 @@ def test_bad_images_are_refused():
 
 
 def test_relighter_properties():
-    r = bandlight.Relighter("a", "d65", "Band3-WP", working_space="srgb")
+    r = bandlight.Relighter("a", "d65", "Band3-WP", working_space="Lin-sRGB")
     assert (r.src, r.dst, r.method, r.working_space) == ("A", "D65", "band3-wp", "rec709")
     assert r.is_linear
     np.testing.assert_allclose(

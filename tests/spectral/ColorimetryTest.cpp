@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -103,4 +105,43 @@ TEST_CASE("Equal-energy normalisation maps E to (1, 1, 1)", "[spectral]")
     CHECK(v.z() == Approx(1.0));
     const Vec3 half = EqualEnergyNormalisedXyz(e * 0.5, Observer::CIE1964_10DEG);
     CHECK(half.y() == Approx(0.5));
+}
+
+TEST_CASE("A light on any regular grid is integrated through its linear interpolant",
+          "[spectral][coarse]")
+{
+    // A flat light gives E's chromaticity (1/3, 1/3) on every grid from 1 to
+    // 100 nm: summed at its own samples, five rows 100 nm apart gave
+    // (0.3647, 0.3529).
+    for (const double step : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0})
+    {
+        INFO(step);
+        const size_t count = size_t(400.0 / step) + 1;
+        const Vec3 xyY = XyzToxyY(IntegrateXyz(Spectrum::Constant(380.0, step, count, 1.0),
+                                               Observer::CIE1931_2DEG));
+        CHECK(std::abs(xyY.x() - 1.0 / 3.0) < 0.0005);
+        CHECK(std::abs(xyY.y() - 1.0 / 3.0) < 0.0005);
+    }
+    // D65 on 10 nm: the CIE's 5 nm D65 is the linear interpolant of its
+    // 10 nm table (CIE 15:2004 §3.1), so its 10 nm samples give the same
+    // white to rounding.
+    const Spectrum d65 = BuiltinIlluminant("D65");
+    const Vec3 full = XyzToxyY(IntegrateXyz(d65, Observer::CIE1931_2DEG));
+    std::vector<double> every10;
+    for (double l = d65.start(); l <= d65.end() + 1e-9; l += 10.0)
+    {
+        every10.push_back(d65(l));
+    }
+    const Vec3 coarse =
+        XyzToxyY(IntegrateXyz(Spectrum(d65.start(), 10.0, every10), Observer::CIE1931_2DEG));
+    CHECK(std::abs(coarse.x() - full.x()) < 1e-4);
+    CHECK(std::abs(coarse.y() - full.y()) < 1e-4);
+}
+
+TEST_CASE("A light of fewer than five samples is refused, not integrated", "[spectral][coarse]")
+{
+    CHECK_THROWS_WITH(UsableIlluminant(Spectrum(380.0, 400.0, {1.0, 1.0}), "two.csv"),
+                      Catch::Matchers::Contains("two.csv: an illuminant of 2 samples"));
+    // Five rows 100 nm apart are enough (and integrate to E, above).
+    CHECK(UsableIlluminant(Spectrum::Constant(380.0, 100.0, 5, 1.0), "five.csv").size() == 5);
 }

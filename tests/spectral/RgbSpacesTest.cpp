@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <set>
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/LU>
@@ -50,7 +52,7 @@ TEST_CASE("sRGB / Rec.709 matrix matches IEC 61966-2-1", "[spectral][published]"
             0.2126, 0.7152, 0.0722,
             0.0193, 0.1192, 0.9505;
     // clang-format on
-    CheckMatrix(RgbToXyzMatrix(FindRgbSpace("srgb").chromaticities), srgb, 0.6e-4);
+    CheckMatrix(RgbToXyzMatrix(FindRgbSpace("lin-srgb").chromaticities), srgb, 0.6e-4);
 }
 
 TEST_CASE("Every built-in space maps RGB white to its white point, Y = 1", "[spectral]")
@@ -71,10 +73,55 @@ TEST_CASE("Every built-in space maps RGB white to its white point, Y = 1", "[spe
 TEST_CASE("RGB space names and aliases", "[spectral]")
 {
     CHECK(FindRgbSpace("lin-rec709").name == "rec709");
-    CHECK(FindRgbSpace("sRGB").name == "rec709");
+    CHECK(FindRgbSpace("Linear-sRGB").name == "rec709");
+    CHECK(FindRgbSpace("LIN_AP1").name == "acescg");
     CHECK(FindRgbSpace("EBU").name == "ebu3213");
     CHECK(FindRgbSpace("Rec2020").name == "rec2020");
     CHECK(FindRgbSpace("P3-D65").name == "p3-d65");
     CHECK_THROWS_WITH(FindRgbSpace("prophoto"), Contains("unknown working space 'prophoto'"));
     CHECK_THROWS_AS(RgbToXyzMatrix({0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3127, 0.329}), Exception);
+}
+
+TEST_CASE("A space is linear: 'srgb' alone names the encoding and is refused", "[spectral]")
+{
+    // "srgb" means the sRGB-encoded image encoding where an image's colour
+    // space is named; a working space is linear, so the name is not taken
+    // to mean linear Rec.709 in one place and encoded sRGB in another.
+    CHECK_THROWS_AS(FindRgbSpace("sRGB"), ParameterError);
+    try
+    {
+        FindRgbSpace("srgb");
+    }
+    catch (const ParameterError& e)
+    {
+        CHECK_THAT(e.spelled(Face::COMMAND), Contains("rec709") && Contains("--colorspace srgb"));
+        CHECK_THAT(e.spelled(Face::PYTHON), Contains("colorspace=srgb"));
+    }
+}
+
+TEST_CASE("The space table: each name once, every alias found, choices in one spelling",
+          "[spectral]")
+{
+    std::set<std::string> names;
+    for (const RgbSpace& s : BuiltinRgbSpaces())
+    {
+        CHECK(names.insert(s.name).second);
+        CHECK(&FindRgbSpace(s.name) == &s);
+        CHECK(!s.configName.empty());
+        CHECK(!s.label.empty());
+        CHECK(!s.keywords.empty());
+        for (const std::string& alias : s.aliases)
+        {
+            INFO(alias);
+            CHECK(names.insert(alias).second);  // no alias names two spaces
+            CHECK(&FindRgbSpace(alias) == &s);
+            CHECK(&FindRgbSpace("lin-" + alias) == &s);
+        }
+        for (const InteropId& id : s.interopIds)
+        {
+            CHECK(names.insert(id.id).second);
+        }
+        CHECK_THAT(RgbSpaceChoices(), Contains(s.name));
+    }
+    CHECK(RgbSpaceChoices() == "acescg, aces2065-1, rec709, rec2020, p3-d65, ebu3213");
 }

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// What users get wrong, tried as they would: each mistake gets one line on
+// stderr and exit code 2 before any work, and nothing of theirs is lost.
+#include <sys/stat.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "cli/RunCommand.h"
+
+using namespace bandlight;
+using Catch::Matchers::Contains;
+using test::Bandlight;
+using test::Result;
+using test::Sh;
+using test::TempPath;
+
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string Slurp(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// A fresh folder for one test.
+std::string Folder(const std::string& name)
+{
+    const std::string dir = TempPath("mistakes_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// One line on stderr: the mistake is named, nothing else is printed.
+void CheckOneLine(const Result& r, const std::string& mentions)
+{
+    CHECK(r.code == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Contains(mentions));
+}
+
+/// A small spectral render (Fichet layout) to work on.
+std::string SpectralShot(const std::string& dir)
+{
+    const std::string scene = dir + "/scene.yaml";
+    std::ofstream(scene) << "camera: {position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, "
+                            "width: 24, height: 16}\n"
+                            "render: {mode: spectral, output: acescg, step: 10}\n"
+                            "lights:\n  - {type: directional, direction: [0, 0, -1], "
+                            "spectrum: F11}\n"
+                            "materials:\n  red: {diffuse: TCS01}\n"
+                            "objects:\n  - {sphere: {center: [0, 0, 0], radius: 1}, material: "
+                            "red}\n";
+    const std::string shot = dir + "/shot.exr";
+    REQUIRE(Bandlight("render '" + scene + "' --spectra -o '" + shot + "'").code == 0);
+    return shot;
+}
+}  // namespace
+
+TEST_CASE("spectral IN IN is refused and the spectral render is kept", "[cli][mistakes]")
+{
+    const std::string dir = Folder("spectral_in_place");
+    const std::string shot = SpectralShot(dir);
+    const std::string before = Slurp(shot);
+    const Result r = Bandlight("spectral '" + shot + "' '" + shot + "' --from F11 --to D65");
+    CheckOneLine(r, "is the input");
+    CHECK(Slurp(shot) == before);
+    // The same file by another name is the same file.
+    const Result again =
+        Bandlight("spectral '" + shot + "' '" + dir + "/./shot.exr' --from F11 --to D65");
+    CHECK(again.code == 2);
+    CHECK(Slurp(shot) == before);
+}
+
+TEST_CASE("config --base into the base's own folder is refused and the studio config is kept",
+          "[cli][mistakes]")
+{
+    const std::string studio = Folder("studio");
+    REQUIRE(Bandlight("config --out '" + studio + "' --illuminants A,D65 --methods bradford")
+                .code == 0);
+    const std::string before = Slurp(studio + "/config.ocio");
+    const Result r = Bandlight("config --base '" + studio + "/config.ocio' --out '" + studio +
+                               "' --illuminants A,F11 --methods cat02");
+    CheckOneLine(r, "the folder of --base");
+    CHECK(Slurp(studio + "/config.ocio") == before);
+    // Its own folder named another way ("studio/.") is the same folder.
+    CHECK(Bandlight("config --base '" + studio + "/config.ocio' --out '" + studio +
+                    "/.' --illuminants A,F11 --methods cat02")
+              .code == 2);
+    CHECK(Slurp(studio + "/config.ocio") == before);
+}
+
+TEST_CASE("Empty output paths are refused, never reported as written", "[cli][mistakes]")
+{
+    const std::string dir = Folder("empty");
+    for (const std::string& args :
+         {std::string("config --out '' --illuminants A,D65 --methods bradford"),
+          std::string("lut --from A --to D65 -o ''"),
+          std::string("accuracy --illuminants A,D65 --methods bradford --ideal-only --no-cost "
+                      "--json ''"),
+          std::string("accuracy --illuminants A,D65 --methods bradford --ideal-only --no-cost "
+                      "--plot ''")})
+    {
+        INFO(args);
+        const Result r = Sh("cd '" + dir + "' && '" + BANDLIGHT_EXE + "' " + args);
+        CheckOneLine(r, "'' (an empty path)");
+        CHECK_THAT(r.out, !Contains("Wrote"));
+    }
+    CHECK(fs::is_empty(dir));
+}
+
+TEST_CASE("Options that do not apply are refused, naming them", "[cli][mistakes]")
+{
+    const std::string dir = Folder("options");
+    REQUIRE(Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford")
+                .code == 0);
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/plate.exr'")
+                .code == 0);
+    SECTION("apply --look with the options of a change of light")
+    {
+        const Result r = Bandlight("apply '" + dir + "/plate.exr' '" + dir +
+                                   "/out.exr' --look bradford_A_to_D65 --config '" + dir +
+                                   "/pkg' --from F11 --to A --method band3 --camera '" + dir +
+                                   "/missing.csv'");
+        CheckOneLine(r, "--look");
+        CHECK_THAT(r.err, Contains("--from") && Contains("--method") && Contains("--camera"));
+        CHECK(!fs::exists(dir + "/out.exr"));
+    }
+    SECTION("config --base-paths without --base")
+    {
+        CheckOneLine(Bandlight("config --out '" + dir + "/x' --base-paths absolute"),
+                     "--base-paths");
+        CHECK(!fs::exists(dir + "/x"));
+    }
+    SECTION("empty lists")
+    {
+        CheckOneLine(Bandlight("config --out '" + dir + "/y' --illuminants ''"),
+                     "--illuminants is empty");
+        CheckOneLine(Bandlight("config --out '" + dir + "/y' --methods ' , '"),
+                     "--methods is empty");
+        CHECK(!fs::exists(dir + "/y"));
+    }
+}
+
+TEST_CASE("lut: the format follows the extension, and a format its extension contradicts is refused",
+          "[cli][mistakes]")
+{
+    const std::string dir = Folder("lut_format");
+    REQUIRE(Bandlight("lut --from A --to D65 --method bradford --size 9 -o '" + dir + "/x.cube'")
+                .code == 0);
+    // A .cube file holds a cube, not CLF's XML.
+    const std::string cube = Slurp(dir + "/x.cube");
+    CHECK_THAT(cube, Contains("LUT_3D_SIZE 9"));
+    CHECK_THAT(cube, !Contains("<?xml"));
+    CheckOneLine(Bandlight("lut --from A --to D65 --format clf -o '" + dir + "/y.cube'"),
+                 "is named .clf");
+    CheckOneLine(Bandlight("lut --from A --to D65 -o '" + dir + "/y.txt'"), ".txt");
+    CheckOneLine(Bandlight("lut --from A --to D65 -o '" + dir + "/y.icc'"), ".icc");
+    CHECK(!fs::exists(dir + "/y.cube"));
+    CHECK(!fs::exists(dir + "/y.txt"));
+}
+
+TEST_CASE("Output paths are checked before any work", "[cli][mistakes]")
+{
+    const std::string dir = Folder("before_work");
+    SECTION("accuracy --json into a missing folder fails at once")
+    {
+        const auto t0 = std::chrono::steady_clock::now();
+        const Result r = Bandlight("accuracy --json '" + dir + "/nodir/x.json'");
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        CHECK(r.code == 2);
+        CHECK_THAT(r.err, Contains("nodir/x.json: cannot write there: the folder") && Contains("does not exist"));
+        CHECK(s < 5.0);  // the full run takes minutes; the check is immediate
+    }
+    SECTION("a plot that is neither .png nor .svg")
+    {
+        CheckOneLine(Bandlight("accuracy --plot '" + dir + "/x.jpg'"), ".png or .svg");
+    }
+    SECTION("a folder where a file is written")
+    {
+        fs::create_directories(dir + "/a.cube");
+        CheckOneLine(Bandlight("lut --from A --to D65 -o '" + dir + "/a.cube'"), "is a folder");
+    }
+}
+
+TEST_CASE("Images are read from regular files: a device or a FIFO is refused at once",
+          "[cli][mistakes]")
+{
+    const std::string dir = Folder("devices");
+    CheckOneLine(Bandlight("apply /dev/zero '" + dir + "/out.exr' --from A --to D65"),
+                 "a device");
+    CheckOneLine(Bandlight("spectral /dev/zero '" + dir + "/out.exr'"), "a device");
+    const std::string fifo = dir + "/x.exr";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CheckOneLine(Bandlight("apply '" + fifo + "' '" + dir + "/out.exr' --from A --to D65"),
+                 "a FIFO");
+    CHECK(!fs::exists(dir + "/out.exr"));
+}
+
+TEST_CASE("Skipping existing frames counts only regular files as finished", "[cli][mistakes]")
+{
+    const std::string dir = Folder("skip_dir");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/in.1001.exr'")
+                .code == 0);
+    fs::copy_file(dir + "/in.1001.exr", dir + "/in.1002.exr");
+    fs::create_directories(dir + "/out.1002.exr");  // named like a frame, not one
+    const Result r = Bandlight("apply '" + dir + "/in.####.exr' '" + dir +
+                               "/out.####.exr' --frames 1001-1002 --from A --to D65 "
+                               "--skip-existing");
+    CheckOneLine(r, "out.1002.exr' is a folder");
+    CHECK(!fs::exists(dir + "/out.1001.exr"));  // refused before any frame
+}
+
+TEST_CASE("OUT patterns with two frame fields expand both", "[cli][mistakes]")
+{
+    const std::string dir = Folder("two_fields");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/in.7.exr'")
+                .code == 0);
+    const Result r = Bandlight("apply '" + dir + "/in.#.exr' '" + dir +
+                               "/out.##.%04d.exr' --frames 7 --from A --to D65");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(fs::is_regular_file(dir + "/out.07.0007.exr"));
+}

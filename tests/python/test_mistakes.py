@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""What Python users get wrong, as the command's users do: each is refused
+with the library's message, before any work, and nothing is lost."""
+
+import os
+
+import pytest
+
+import bandlight
+from test_apply import write_plate
+
+
+def test_a_look_with_the_keywords_of_a_change_of_light_is_refused(tmp_path):
+    write_plate(tmp_path / "plate.exr")
+    config = tmp_path / "config"
+    bandlight.config(config, illuminants="A,D65", methods=["bradford"])
+    with pytest.raises(ValueError, match=r"look applies a look .*src, dst, method.*camera"):
+        bandlight.apply(tmp_path / "plate.exr", tmp_path / "out.exr",
+                        look="bradford_A_to_D65", config=config, src="F11", dst="A",
+                        method="band3", camera=tmp_path / "missing.csv")
+    assert not (tmp_path / "out.exr").exists()
+
+
+def test_an_empty_output_folder_is_refused(tmp_path):
+    os.chdir(tmp_path)
+    with pytest.raises(ValueError, match=r"an empty path"):
+        bandlight.config("", illuminants="A,D65", methods=["bradford"])
+    assert not any(tmp_path.iterdir())
+    # Not given at all: the config is returned, nothing written.
+    assert len(list(bandlight.config(illuminants="A,D65", methods=["bradford"]).getLooks())) == 2
+
+
+def test_a_spectral_image_is_not_written_over_itself(tmp_path):
+    scene = tmp_path / "scene.yaml"
+    scene.write_text("camera: {position: [0, 0, 5], look_at: [0, 0, 0], fov: 40, width: 8, "
+                     "height: 6}\nrender: {mode: spectral, output: acescg, step: 10}\n"
+                     "lights:\n  - {type: directional, direction: [0, 0, -1], spectrum: F11}\n"
+                     "materials:\n  red: {diffuse: TCS01}\n"
+                     "objects:\n  - {sphere: {center: [0, 0, 0], radius: 1}, material: red}\n")
+    from conftest import run_cli
+    run_cli("render", scene, "--spectra", "-o", tmp_path / "shot.exr")
+    before = (tmp_path / "shot.exr").read_bytes()
+    with pytest.raises(ValueError, match="is the input"):
+        bandlight.spectral(tmp_path / "shot.exr", tmp_path / "shot.exr", src="F11", dst="D65")
+    assert (tmp_path / "shot.exr").read_bytes() == before
+
+
+def test_the_lut_format_follows_the_extension(tmp_path):
+    bandlight.lut(tmp_path / "x.cube", "A", "D65", size=5)
+    assert "LUT_3D_SIZE 5" in (tmp_path / "x.cube").read_text()
+    with pytest.raises(ValueError, match=r"is named \.clf"):
+        bandlight.lut(tmp_path / "y.cube", "A", "D65", format="clf")
+    assert not (tmp_path / "y.cube").exists()
+
+
+def test_srgb_is_an_encoding_not_a_working_space():
+    with pytest.raises(ValueError, match=r"rec709.*colorspace=srgb"):
+        bandlight.Relighter("A", "D65", working_space="srgb")
+    assert bandlight.Relighter("A", "D65", working_space="lin-srgb").working_space == "rec709"

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// The fits of the illuminant-change methods (transforms/IlluminantChange.cpp),
+// which the method registry (transforms/Methods.cpp) points to. Each reads
+// what distinguishes its methods from the spec or its registry entry, never
+// by comparing method values. Not installed.
+
+#include "transforms/IlluminantChange.h"
+
+namespace bandlight::detail
+{
+
+/// none: the identity.
+Mat3 IdentityFit(const Light&, const Light&, const MethodSpec&, const RgbSpace&, Observer);
+/// vonkries, bradford, cat02, prefilter: a chromatic adaptation of the
+/// whites by the entry's `adaptation`.
+Mat3 AdaptationFit(const Light& from, const Light& to, const MethodSpec& method,
+                   const RgbSpace& working, Observer observer);
+/// band, band-wp: a diagonal in band space (ratios of the lights' band
+/// means, or of the whites' band coordinates when `whitePreserving`).
+Mat3 BandFit(const Light& from, const Light& to, const MethodSpec& method, const RgbSpace& working,
+             Observer observer);
+/// fit3x3: least squares on the training remittances (TrainingOf).
+Mat3 LeastSquaresFit(const Light& from, const Light& to, const MethodSpec& method,
+                     const RgbSpace& working, Observer observer);
+/// metamer: the smoothest remittance of each pixel, re-lit.
+Mat3 MetamerFit(const Light& from, const Light& to, const MethodSpec& method,
+                const RgbSpace& working, Observer observer);
+
+/// upsample: the per-pixel sigmoid-polynomial fit, re-lit spectrally.
+PixelForm UpsampleForm(const Light& from, const Light& to, const MethodSpec& method,
+                       const RgbSpace& working, Observer observer);
+/// rootpoly, rootpoly3: the root polynomial fitted on the training set.
+PixelForm RootPolyForm(const Light& from, const Light& to, const MethodSpec& method,
+                       const RgbSpace& working, Observer observer);
+/// rootpoly-camera, rootpoly3-camera: the camera's daylight IDT undone,
+/// then the root polynomial fitted from the camera's record.
+PixelForm RootPolyCameraForm(const Light& from, const Light& to, const MethodSpec& method,
+                             const RgbSpace& working, Observer observer);
+
+}  // namespace bandlight::detail
