@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Cost of rendering the lecture's Phong scenes, per mode, and how it grows
+// Cost of rendering the band model's Phong scenes, per mode, and how it grows
 // with lights, spectral samples and pixels.
 //   build/bench/bench_scene
 #include <benchmark/benchmark.h>
@@ -11,7 +11,7 @@ using namespace bandlight;
 
 namespace
 {
-/// The lecture's seven materials as spheres on a floor, `lights` point
+/// The band model's seven materials as spheres on a floor, `lights` point
 /// lights of distinct spectra (so none is merged), 1920×1080 unless given.
 Scene MaterialScene(int lights, RenderSettings::Mode mode, double step, int width = 1920,
                     int height = 1080)

@@ -61,7 +61,7 @@ static void BM_IntegrateXyzEmission81(benchmark::State& state)
 }
 BENCHMARK(BM_IntegrateXyzEmission81);
 
-/// Band means of one 81-sample spectrum over the lecture's three bands.
+/// Band means of one 81-sample spectrum over the band model's three bands.
 static void BM_BandMeansLecture(benchmark::State& state)
 {
     const Spectrum r = Tcs01On81();

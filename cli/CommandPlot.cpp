@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `bandlight plot`: the lecture's pictures — a spectrum and its band means as
+// `bandlight plot`: the band model's pictures — a spectrum and its band means as
 // steps, for the matching functions, an illuminant or a test colour.
 #include <algorithm>
 #include <iostream>
@@ -60,7 +60,7 @@ void RunPlot(const PlotOptions& o)
         CommandReporter reporter;
         const Light s = jobs::ResolveIlluminant(o.illuminant, reporter);
         curves = {{s.name, s.spectrum}};
-        // The lecture normalises illuminant band means to the largest band = 1.
+        // The band model normalises illuminant band means to the largest band = 1.
         const std::vector<double> means = BandMeans(s.spectrum, bands);
         curves[0].scale = 1.0 / *std::max_element(means.begin(), means.end());
         title = "Illuminant " + s.name + " and its band means (largest band = 1)";

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `bandlight tables`: the lecture's three tables (SPEC §1.2) — matching-function
+// `bandlight tables`: the band model's three tables (docs/science.md §1.2) — matching-function
 // band rows, illuminant band means, remittance band means.
 #include <iostream>
 #include <memory>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-// The jobs that only compute: the lecture's band tables, colorimetry of a
+// The jobs that only compute: the band model's band tables, colorimetry of a
 // light or of surfaces under it, and colour rendering.
 
 #include <string>

@@ -63,13 +63,13 @@ struct ConfigPackage
     std::string text;
 };
 
-/// The lecture's five illuminants: A, C, D65, F2, F11.
+/// The band model's five illuminants: A, C, D65, F2, F11.
 std::vector<Light> LectureLights();
 
 /// A complete OCIO v2 config whose reference and scene_linear space is the
 /// working space: linear spaces for every built-in primaries set, ACES2065-1
 /// and CIE-XYZ-D65 interchange spaces, an sRGB-encoded space, a Non-Color
-/// data space, the lecture's band space, an sRGB display with Standard and
+/// data space, the band model's band space, an sRGB display with Standard and
 /// Raw views, every role ociocheck and Blender ask for, and the looks and
 /// named transforms. Built with the OCIO Config API and validated. Linear
 /// methods are inline matrices; upsample looks are FileTransforms of CLF

@@ -47,12 +47,12 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
                                                     int lutSize = defaults::TRANSFORM_LUT_SIZE);
 
 /// Working RGB → the band space of a three-band set (radiometric band
-/// values, VB/VG/VR for the lecture's bands). Throws Exception for other
+/// values, VB/VG/VR for the band model's bands). Throws Exception for other
 /// than three bands (an N-band space has N channels, which OCIO images have not).
 OCIO::GroupTransformRcPtr BandSpaceTransform(const BandSet& bands, const RgbSpace& working,
                                              Observer observer = Observer::CIE1931_2DEG);
 
-/// The lecture's material tint (R_diff as a diagonal in band space), in the
+/// The band model's material tint (R_diff as a diagonal in band space), in the
 /// working space.
 OCIO::GroupTransformRcPtr MaterialTintTransform(const std::vector<double>& remittance,
                                                 const BandSet& bands, const RgbSpace& working,

@@ -69,7 +69,7 @@ void SetRenderMode(RenderSettings& settings, const std::string& mode)
 Spectrum StepSpectrum(const BandSet& bands, const std::vector<double>& values)
 {
     // 1 nm samples so band edges fall on samples; a sample at λ belongs to
-    // the band with a ≤ λ < b, as the lecture's band means count them.
+    // the band with a ≤ λ < b, as the band model's band means count them.
     std::vector<double> v(471, 0.0);
     for (size_t i = 0; i < v.size(); ++i)
     {
@@ -99,7 +99,7 @@ const std::vector<std::string>& LectureMaterialNames()
 
 SceneMaterial LectureMaterial(const std::string& name)
 {
-    // SPEC §1.3 (components R, G, B; here in band order VB, VG, VR).
+    // docs/science.md §1.3 (components R, G, B; here in band order VB, VG, VR).
     struct Row
     {
         const char* name;

@@ -3,7 +3,7 @@
 
 // The scene model of `bandlight render`: lights with spectra, Phong
 // materials with remittances, spheres, planes, a camera and the render
-// settings (SPEC §1.3, §2 item 6). Plain values; the reader is
+// settings (docs/science.md §1.3; docs/scenes.md). Plain values; the reader is
 // render/SceneFile.h, the planner render/ScenePlan.h.
 
 #include <string>
@@ -50,7 +50,7 @@ struct SceneLight
         DIRECTIONAL,
     };
     Kind kind = Kind::POINT;
-    SceneSpectrum spectrum;  ///< scaled so its largest band mean is 1 (the lecture's I)
+    SceneSpectrum spectrum;  ///< scaled so its largest band mean is 1 (the band model's I)
     double intensity = 1.0;
     Vec3 position = Vec3::Zero();     ///< POINT
     Vec3 direction = Vec3(0, -1, 0);  ///< DIRECTIONAL: the direction the light travels
@@ -60,7 +60,7 @@ struct SceneLight
     bool attenuates() const noexcept { return attenuation != Vec3(1, 0, 0); }
 };
 
-/// The compact Phong material of SPEC §1.3: R_amb, R_diff, R_spek and n
+/// The compact Phong material of docs/science.md §1.3: R_amb, R_diff, R_spek and n
 /// (the full form k_a·O_a, k_d·O_d, k_s·O_s is folded into these).
 struct SceneMaterial
 {
@@ -74,7 +74,7 @@ struct SceneMaterial
     double exponent = 1.0;
 };
 
-/// The lecture's material table (SPEC §1.3), as band values over VB/VG/VR:
+/// The band model's material table (docs/science.md §1.3), as band values over VB/VG/VR:
 /// copper, gold, silver, aluminium, tin, matte lacquer, gloss lacquer.
 /// R_amb is taken equal to R_diff (the table has no ambient column). Throws
 /// Exception for another name.
@@ -100,7 +100,7 @@ struct Camera
     enum class Projection
     {
         PINHOLE,       ///< rays from `position` through the image plane, `fovDeg` apart
-        ORTHOGRAPHIC,  ///< parallel rays along the view direction, as the lecture's figures
+        ORTHOGRAPHIC,  ///< parallel rays along the view direction, as the band model's figures
     };
     Projection projection = Projection::PINHOLE;
     Vec3 position = Vec3(0, 0, 5);
@@ -127,7 +127,7 @@ struct RenderSettings
     double stepNm = 0.0;  ///< spectral grid; 0: chosen by the planner
     /// The spectral integration range, nm: samples at rangeMinNm + i·step up
     /// to rangeMaxNm, and the emission lines inside it. The default is SPEC
-    /// §1.1's and the lecture's 380–780 nm (the spectral reference of
+    /// §1.1's and the band model's 380–780 nm (the spectral reference of
     /// transforms/ sums the same); 360–830 nm, the matching functions' full
     /// range (CIE 15:2004), is the widest allowed.
     double rangeMinNm = kDefaultRangeMinNm;
@@ -140,7 +140,7 @@ struct RenderSettings
     static constexpr double kWidestRangeMaxNm = 830.0;
 };
 
-/// Sets the mode from its name: "band3" (the lecture's VB/VG/VR), "bandN"
+/// Sets the mode from its name: "band3" (the band model's VB/VG/VR), "bandN"
 /// (N equal bands over 400–700 nm, 3 ≤ N ≤ 300) or "spectral" (the bands
 /// are kept: they normalise the lights). Throws Exception otherwise.
 void SetRenderMode(RenderSettings& settings, const std::string& mode);

@@ -18,10 +18,10 @@ namespace bandlight::detail
 {
 
 // ---------------------------------------------------------------------------
-// Colour. A light is scaled so its largest band mean is 1 (the lecture's I).
+// Colour. A light is scaled so its largest band mean is 1 (the band model's I).
 // The stimulus φ = light × remittance becomes CIE XYZ divided by N_y, the
 // integral of ȳ over the bands: an equal-energy light of band value 1 on a
-// white surface has Y = 1. Band mode gets the same XYZ from the lecture's
+// white surface has Y = 1. Band mode gets the same XYZ from the band model's
 // row-normalised band matrix B: XYZ = diag(N) / N_y · B · (I ⊙ R), N_k the
 // band integral of each matching function (B's row normaliser).
 
@@ -120,7 +120,7 @@ std::string DescribeRange(const RenderSettings& settings, const Grid& grid)
                            settings.rangeMaxNm == RenderSettings::kDefaultRangeMaxNm;
     std::ostringstream o;
     o << grid.count << " samples at " << grid.step << " nm over " << grid.start << "-" << grid.end
-      << " nm" << (byDefault ? " (the default, as SPEC §1.1 sums)" : " (as the scene sets)");
+      << " nm" << (byDefault ? " (the default, as docs/science.md §1.1 sums)" : " (as the scene sets)");
     return o.str();
 }
 

@@ -37,7 +37,7 @@ Output MakeOutput(const Scene& s);
 /// Band means of a light or remittance (lines count in their band).
 std::vector<double> Means(const SceneSpectrum& s, const BandSet& bands);
 
-/// 1 / the light's largest band mean (the lecture's normalisation).
+/// 1 / the light's largest band mean (the band model's normalisation).
 double LightScale(const SceneSpectrum& s, const BandSet& bands);
 
 /// A spectral sampling grid: `count` samples from `start` nm, `step` apart,

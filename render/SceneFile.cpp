@@ -312,7 +312,7 @@ SceneMaterial Material(const Reader& r, const std::string& name, const YAML::Nod
     const SceneSpectrum zero{"0", ConstantRemittance(0.0), {}};
     if (full)
     {
-        // R_amb = k_a·O_a, R_diff = k_d·O_d, R_spek = k_s·O_s (SPEC §1.3);
+        // R_amb = k_a·O_a, R_diff = k_d·O_d, R_spek = k_s·O_s (docs/science.md §1.3);
         // O_* defaults to 1, and an O_* without its k_* would be ignored.
         auto part = [&](const char* k, const char* o, const char* r_)
         {

@@ -33,7 +33,7 @@ struct RenderedImage
 };
 
 /// Renders with a plan: primary rays (pinhole or orthographic) against
-/// spheres and planes (no shadows: the lecture's local Phong model), per pixel
+/// spheres and planes (no shadows: the band model's local Phong model), per pixel
 /// Σ_terms geometry × precomputed colour; rows split over `threads` threads
 /// (0: all cores).
 RenderedImage RenderScene(const Scene& scene, const ScenePlan& plan, int threads = 0,

@@ -30,7 +30,7 @@ Vec3 SurfaceXyz(const Spectrum& reflectance, const Spectrum& illuminant, Observe
 /// XYZ of the illuminant itself on the same scale (its white point, Y = 100).
 Vec3 IlluminantWhiteXyz(const Spectrum& illuminant, Observer observer);
 
-/// The lecture's normalisation: each tristimulus value divided by the
+/// The band model's normalisation: each tristimulus value divided by the
 /// integral of its own matching function, so that the equal-energy
 /// stimulus φ = 1 gives (1, 1, 1).
 Vec3 EqualEnergyNormalisedXyz(const Spectrum& stimulus, Observer observer);

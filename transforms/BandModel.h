@@ -17,8 +17,8 @@ namespace bandlight
 /// How a band mean m_b(f) = (1/Δλ_b) ∫_b f(λ) dλ is evaluated.
 enum class BandRule
 {
-    /// The lecture's rule (SPEC §1.2): the average of the samples with
-    /// a ≤ λ < b. The default; reproduces the lecture's tables.
+    /// The band model's rule (docs/science.md §1.2): the average of the samples with
+    /// a ≤ λ < b. The default; reproduces the band model's tables.
     SAMPLE_MEAN,
     /// Exact integral of the piecewise-linear spectrum over [a, b] / (b - a).
     EXACT,
@@ -49,7 +49,7 @@ std::vector<Spectrum> MatchingFunctionsOf(MatchingSet set, Observer observer);
 /// The row-normalised matching-function band matrix (3 × bands): entry
 /// (k, b) is the band mean of matching function k in band b divided by the
 /// sum of its row, so that an equal-energy source on an ideal white surface
-/// (band values all 1) gives the valence (1, 1, 1) (SPEC §1.2).
+/// (band values all 1) gives the valence (1, 1, 1) (docs/science.md §1.2).
 Eigen::MatrixXd MatchingBandMatrix(const BandSet& bands, MatchingSet set, Observer observer,
                                    BandRule rule = BandRule::SAMPLE_MEAN);
 
@@ -82,7 +82,7 @@ double ConditionNumber(const Eigen::MatrixXd& m);
 
 /// The largest condition number of a band matrix the band methods accept.
 /// A band value solved from a pixel carries up to this many times the
-/// pixel's relative error; the lecture's bands give 4.3, ten equal bands
+/// pixel's relative error; the band model's bands give 4.3, ten equal bands
 /// over 400–700 nm 5.2, and sets with a band the matching functions barely
 /// see (380–390–400–780 nm: 1.4e5) are refused.
 constexpr double MAX_BAND_CONDITION = 1000.0;

@@ -25,7 +25,7 @@ public:
     /// Throws Exception when the bands are empty, not increasing or overlap.
     explicit BandSet(std::vector<Band> bands);
 
-    /// The lecture's three bands: VB [400, 500), VG [500, 600), VR [600, 700).
+    /// The band model's three bands: VB [400, 500), VG [500, 600), VR [600, 700).
     static BandSet Lecture();
 
     /// n equal bands over [minNm, maxNm), named B1..Bn (or VB/VG/VR for the

@@ -54,7 +54,7 @@ inline constexpr const char* SPECTRAL_KIND = "emissive";
 /// How spectral channels are read: "auto" (point samples, or buckets where
 /// the layout says so), "points" or "buckets".
 inline constexpr const char* SPECTRAL_SAMPLING = "auto";
-/// The illuminants a config gets looks between (the lecture's five).
+/// The illuminants a config gets looks between (the band model's five).
 inline constexpr const char* CONFIG_ILLUMINANTS = "A,C,D65,F2,F11";
 
 /// 3D LUT size of a config's non-linear looks: 65³ keeps the LUT's own

@@ -119,7 +119,7 @@ Eigen::MatrixXd WorkingToBandMatrix(const BandSet& bands, const RgbSpace& workin
 Eigen::MatrixXd BandToWorkingMatrix(const BandSet& bands, const RgbSpace& working,
                                     Observer observer = Observer::CIE1931_2DEG);
 
-/// The lecture's material tint: working RGB → band space, multiply band b by
+/// The band model's material tint: working RGB → band space, multiply band b by
 /// `remittance[b]` (R_diff), → working RGB. Throws Exception when the
 /// remittance has not one value per band.
 Mat3 MaterialTintMatrix(const std::vector<double>& remittance, const BandSet& bands,

@@ -33,7 +33,7 @@ struct Filter
 
 using Pairs = std::vector<std::pair<std::string, std::string>>;
 
-/// The lecture's pairs: A, F2 and F11 to D65.
+/// The band model's pairs: A, F2 and F11 to D65.
 const Pairs& LecturePairs();
 
 Summary Summarise(const std::vector<AccuracyRow>& rows, const std::string& method,

@@ -200,7 +200,7 @@ extern const char* const kPlatesDoc;
 /// (None: their defaults) and the plates it is for.
 MethodSpec ToMethod(const std::string& name, const py::handle& training, const PlatesArgs& plates);
 
-/// The bands argument: None is the lecture's VB/VG/VR; a BandSet, a str of
+/// The bands argument: None is the band model's VB/VG/VR; a BandSet, a str of
 /// edges ("400,500,600,700", parsed as --bands is) or a sequence of edges.
 BandSet ToBands(const py::handle& arg);
 

@@ -128,7 +128,7 @@ Spectrum). Spectra multiply (``illuminant * remittance``, resampled onto the
 left operand's grid) and scale (``2.0 * s``). They pickle.
 )doc")
         .def(py::init(&MakeSpectrum), py::arg("wavelengths"), py::arg("values"),
-             py::arg("name") = "",
+             py::arg("name") = std::string(),
              "Spectrum from evenly spaced, increasing wavelengths (nm) and one value each.\n"
              "Raises ValueError for an irregular grid (resample with numpy.interp first),\n"
              "mismatched lengths, fewer than 2 samples or non-finite values.")

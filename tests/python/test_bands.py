@@ -72,7 +72,7 @@ def test_band_means_of_spectra():
     assert rows.shape == (15, 3)
     np.testing.assert_allclose(rows[3], bandlight.remittance_bands(tcs[3]))
     np.testing.assert_allclose(rows[3], tcs[3].band_means())
-    # The lecture's rule: the average of the 5 nm samples with a <= lambda < b.
+    # The band model's rule: the average of the 5 nm samples with a <= lambda < b.
     v = tcs[3].values
     w = tcs[3].wavelengths
     np.testing.assert_allclose(rows[3], [v[(w >= a) & (w < a + 100)].mean()

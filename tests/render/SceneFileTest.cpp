@@ -36,7 +36,7 @@ std::string WithMaterial(const std::string& material)
     return kLight + "materials:\n  m: " + material + "\n";
 }
 
-/// The value of a step remittance in each of the lecture's bands (VB, VG,
+/// The value of a step remittance in each of the band model's bands (VB, VG,
 /// VR), taken at the band's middle.
 std::vector<double> Bands(const SceneSpectrum& s)
 {
@@ -242,7 +242,7 @@ materials:
     CHECK(s.materials[4].ambientStar.continuous(450.0) == Approx(0.1));
     // Camera defaults: a pinhole.
     CHECK(s.camera.projection == Camera::Projection::PINHOLE);
-    // The spectral range: SPEC §1.1's 380-780 nm.
+    // The spectral range: docs/science.md §1.1's 380-780 nm.
     CHECK(s.settings.rangeMinNm == 380.0);
     CHECK(s.settings.rangeMaxNm == 780.0);
 }

@@ -50,7 +50,7 @@ const float* Pixel(const RenderedImage& img, int x, int y)
 
 TEST_CASE("The lecture's counter-example: spectral black, band (0, 0.2, 0)", "[render][scene]")
 {
-    // SPEC §1.4: light 1 on VB, VR and 500–549 nm; surface 0.8 on 550–599 nm only.
+    // docs/science.md §1.4: light 1 on VB, VR and 500–549 nm; surface 0.8 on 550–599 nm only.
     std::vector<double> light(471), surface(471);
     for (int i = 0; i < 471; ++i)
     {
@@ -105,7 +105,7 @@ TEST_CASE("One light, no specular, no attenuation: R_amb* + R_diff cos α in clo
     const double diff[3] = {0.4, 0.5, 1.0}, star[3] = {0.1, 0.05, 0.2};
     for (int b = 0; b < 3; ++b)
     {
-        // I_0 = 2 × I (the lecture's max-normalised band light).
+        // I_0 = 2 × I (the band model's max-normalised band light).
         const double expected = 2.0 * i[size_t(b)] * (star[b] + diff[b] * std::cos(theta));
         CHECK(Pixel(img, 3, 2)[b] == Approx(expected).margin(1e-6));
         CHECK(Pixel(slow, 3, 2)[b] == Approx(expected).margin(1e-6));
@@ -298,7 +298,7 @@ TEST_CASE("The spectral range bounds the samples and the lines", "[render][scene
     CHECK(plan.samples == 81);
     CHECK_THAT(ExplainPlan(s, plan),
                Contains("spectral range: 81 samples at 5 nm over 380-780 nm (the default, as "
-                        "SPEC §1.1 sums)") &&
+                        "docs/science.md §1.1 sums)") &&
                    Contains("1 emission lines outside the integration range: not counted"));
     const RenderedImage narrow = RenderScene(s, plan, 1);
     const RenderedImage slow = RenderSceneUnplanned(s, 1);

@@ -11,8 +11,8 @@ using Catch::Matchers::Contains;
 
 TEST_CASE("Matching-function band matrix reproduces the lecture's table", "[transforms][lecture]")
 {
-    // SPEC §1.2 acceptance table (the lecture's, from the CIE 1931 5 nm table),
-    // four decimals: the lecture's rule reproduces it to 1e-4.
+    // docs/science.md §1.2 acceptance table (the band model's, from the CIE 1931 5 nm table),
+    // four decimals: the band model's rule reproduces it to 1e-4.
     // clang-format off
     const double expected[3][3] = {{0.1666, 0.4250, 0.4084},
                                    {0.0607, 0.7506, 0.1888},
@@ -33,7 +33,7 @@ TEST_CASE("Matching-function band matrix reproduces the lecture's table", "[tran
 
 TEST_CASE("Illuminant band means reproduce the lecture's table", "[transforms][lecture]")
 {
-    // SPEC §1.2 acceptance table: tolerance 0.001, except A's I_B (0.005).
+    // docs/science.md §1.2 acceptance table: tolerance 0.001, except A's I_B (0.005).
     struct Row
     {
         const char* name;

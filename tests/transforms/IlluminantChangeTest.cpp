@@ -128,7 +128,7 @@ TEST_CASE("Material tint is the identity for a white remittance", "[transforms]"
 {
     const RgbSpace& ws = FindRgbSpace("acescg");
     CHECK(MaterialTintMatrix({1, 1, 1}, BandSet::Lecture(), ws).isIdentity(1e-12));
-    // Gold (SPEC §1.3, R_diff in R, G, B order = VR, VG, VB: 0.5, 0.5, 0.0).
+    // Gold (docs/science.md §1.3, R_diff in R, G, B order = VR, VG, VB: 0.5, 0.5, 0.0).
     const Mat3 gold = MaterialTintMatrix({0.0, 0.5, 0.5}, BandSet::Lecture(), ws);
     const Eigen::MatrixXd toBand = WorkingToBandMatrix(BandSet::Lecture(), ws);
     const Eigen::VectorXd bands = toBand * gold * (toBand.inverse() * Eigen::Vector3d(1, 1, 1));

@@ -124,7 +124,7 @@ TEST_CASE("Balanced looks keep neutrals neutral", "[transforms][plates]")
             }
         }
     }
-    // The lecture's plain band model is not exact on white in either convention.
+    // The band model's plain band model is not exact on white in either convention.
     const Relighter band(L("A"), L("D65"), Balanced("band3"), ws);
     CHECK((band.apply(Vec3::Ones()) - Vec3::Ones()).cwiseAbs().maxCoeff() > 1e-3);
 }
