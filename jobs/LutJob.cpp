@@ -52,9 +52,8 @@ LutResult MakeLut(const LutRequest& r, Reporter& reporter)
         {
             options.shaper = ShaperSpec::ForNonLinear();
         }
-        options.description = "Relight from " + r.relight.src.name + " to " + r.relight.dst.name +
-                              " in " + working.displayName + ". " + DescribeMethod(method) + " " +
-                              method.plates.describe(working.displayName);
+        options.description =
+            LookDescription(r.relight.src, r.relight.dst, method, working, observer);
         if (options.encoding != LutEncoding::LINEAR)
         {
             options.description += " " + result.encodingDescription;

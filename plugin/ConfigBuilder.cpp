@@ -162,10 +162,8 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                                     "' clashes with a look, named transform or colour space the "
                                     "config already has");
                 }
-                const std::string description = "Relight from " + from.name + " to " + to.name +
-                                                " in " + working.displayName + ". " +
-                                                DescribeMethod(method) + " " +
-                                                method.plates.describe(working.displayName);
+                const std::string description =
+                    LookDescription(from, to, method, working, o.observer);
                 // A matrix inline; a non-linear method as a CLF file the
                 // package carries (configs cannot hold a 3D LUT inline).
                 OCIO::TransformRcPtr transform;

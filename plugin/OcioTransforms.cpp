@@ -64,9 +64,7 @@ OCIO::GroupTransformRcPtr IlluminantChangeTransform(const Light& from, const Lig
                                                     int lutSize)
 {
     const std::string name = LookName(method.name, from.name, to.name);
-    const std::string description = "Relight from " + from.name + " to " + to.name + " in " +
-                                    working.displayName + ". " + DescribeMethod(method) + " " +
-                                    method.plates.describe(working.displayName);
+    const std::string description = LookDescription(from, to, method, working, observer);
     auto relighter = std::make_shared<Relighter>(from, to, method, working, observer);
     if (relighter->isLinear())
     {

@@ -363,6 +363,19 @@ PixelForm RootPolyCameraForm(const Light& from, const Light& to, const MethodSpe
 
 }  // namespace detail
 
+std::string LookDescription(const Light& from, const Light& to, const MethodSpec& method,
+                            const RgbSpace& working, Observer observer)
+{
+    std::string text = "Relight from " + from.name + " to " + to.name + " in " +
+                       working.displayName + ". " + DescribeMethod(method) + " ";
+    if (!method.plates.balanced() || method.entry().isReference())
+    {
+        return text + method.plates.describe(working.displayName);
+    }
+    const Vec3 grey = Relighter(from, to, method, working, observer).apply(Vec3::Constant(0.18));
+    return text + method.plates.describe(working.displayName, &grey);
+}
+
 Relighter::~Relighter() = default;
 Relighter::Relighter(Relighter&&) noexcept = default;
 

@@ -111,6 +111,12 @@ private:
     void prepareKernels();
 };
 
+/// The description of the look `method` makes from `from` to `to`: the
+/// lights, the method's own sentence and the plates it is for, with what
+/// it does to 0.18 grey on balanced plates measured, not assumed.
+std::string LookDescription(const Light& from, const Light& to, const MethodSpec& method,
+                            const RgbSpace& working, Observer observer = Observer::CIE1931_2DEG);
+
 /// Working RGB → band values (N × 3): the band-space conversion, B⁺ · M.
 Eigen::MatrixXd WorkingToBandMatrix(const BandSet& bands, const RgbSpace& working,
                                     Observer observer = Observer::CIE1931_2DEG);

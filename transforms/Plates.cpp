@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "transforms/Plates.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cctype>
 
@@ -42,7 +44,27 @@ std::string Plates::key() const
     return balanced() ? "balanced-" + AdaptationName(adaptation) : "lit";
 }
 
-std::string Plates::describe(const std::string& workingSpaceName) const
+namespace
+{
+/// What the description says of neutrals: generated from what the look
+/// does to 0.18 grey, so it cannot claim what the look does not do.
+std::string NeutralClause(const Vec3* grey)
+{
+    const bool neutral = !grey || (grey->minCoeff() > 0.0 &&
+                                   grey->maxCoeff() / grey->minCoeff() - 1.0 < 1e-3);
+    if (neutral)
+    {
+        return "so neutrals stay neutral.";
+    }
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "but the method is not exact on white: 0.18 grey becomes (%.3f, %.3f, %.3f).",
+                  grey->x(), grey->y(), grey->z());
+    return buf;
+}
+}  // namespace
+
+std::string Plates::describe(const std::string& workingSpaceName, const Vec3* grey) const
 {
     if (!balanced())
     {
@@ -52,8 +74,8 @@ std::string Plates::describe(const std::string& workingSpaceName) const
     return std::string("For white-balanced plates (the ACES convention): images balanced to ") +
            workingSpaceName + "'s white by " +
            (adaptation == AdaptationMethod::BRADFORD ? "Bradford" : "CAT02") +
-           "; the look undoes that balance, changes the light and balances again, so neutrals "
-           "stay neutral.";
+           "; the look undoes that balance, changes the light and balances again, " +
+           NeutralClause(grey);
 }
 
 Plates ParsePlates(const std::string& convention, const std::string& adaptation)

@@ -44,7 +44,10 @@ struct Plates
     /// "lit" or "balanced-cat02" / "balanced-bradford": for reports and JSON.
     std::string key() const;
     /// One sentence for config and look descriptions.
-    std::string describe(const std::string& workingSpaceName) const;
+    /// One sentence on the plates a look is for. For balanced plates it
+    /// says what becomes of a neutral: `grey` is what the look makes of
+    /// 0.18 grey (nullptr: not said).
+    std::string describe(const std::string& workingSpaceName, const Vec3* grey = nullptr) const;
 };
 
 /// Parses --plates (lit, balanced) and --adaptation (cat02, bradford);

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -219,4 +221,51 @@ TEST_CASE("The OCIO form of upsample agrees with its direct form", "[plugin]")
         INFO(from << ": mean ΔE00 LUT vs direct " << sum / n);
         CHECK(sum / n < 1.0);
     }
+}
+
+TEST_CASE("Every look's description says what it does to grey, as its processor does it",
+          "[plugin]")
+{
+    // Balanced plates: 0.18 grey through each look of a written-and-read
+    // config. A look whose description promises that neutrals stay neutral
+    // keeps grey grey; one that is not exact on white (band3) says what
+    // grey becomes, to three decimals.
+    ConfigOptions o = Options("acescg");
+    std::stringstream text;
+    BuildConfig(o).config->serialize(text);
+    const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromStream(text);
+    size_t kept = 0, notKept = 0;
+    for (int i = 0; i < config->getNumLooks(); ++i)
+    {
+        const std::string name = config->getLookNameByIndex(i);
+        const std::string description = config->getLook(name.c_str())->getDescription();
+        INFO(name << ": " << description);
+        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+        t->setSrc(OCIO::ROLE_SCENE_LINEAR);
+        t->setDst(OCIO::ROLE_SCENE_LINEAR);
+        t->setLooks(name.c_str());
+        float grey[3] = {0.18f, 0.18f, 0.18f};
+        config->getProcessor(t)->getDefaultCPUProcessor()->applyRGB(grey);
+        const float lo = std::min({grey[0], grey[1], grey[2]});
+        const float hi = std::max({grey[0], grey[1], grey[2]});
+        if (description.find("neutrals stay neutral") != std::string::npos)
+        {
+            CHECK(hi / lo - 1.0f < 1e-3f);
+            ++kept;
+        }
+        else
+        {
+            REQUIRE(description.find("0.18 grey becomes (") != std::string::npos);
+            char said[64];
+            std::snprintf(said, sizeof said, "(%.3f, %.3f, %.3f)", grey[0], grey[1], grey[2]);
+            CHECK_THAT(description, Contains(said));
+            CHECK(hi / lo - 1.0f > 1e-3f);
+            ++notKept;
+        }
+    }
+    CHECK(kept > 0);
+    CHECK(notKept > 0);  // band3 and band6 on these lights
+    // The case that was described wrongly: band3 from F2 to A turns grey red.
+    const std::string band3 = config->getLook("band3_F2_to_A")->getDescription();
+    CHECK_THAT(band3, Contains("not exact on white: 0.18 grey becomes (0.32"));
 }
