@@ -42,8 +42,9 @@ std::string AccuracyReport(const AccuracyResult& result)
         for (const ReflectanceSet& set : options.sets)
         {
             out << "\nset " << set.name << " (" << set.samples.size() << " remittances)\n"
-                << "  method       ideal  shipped  shipped worst (at)   p95     max   worst "
-                   "sample and pair      A/F2/F11->D65 worst  ns/pixel\n";
+                << "  method       ideal  shipped  " << (anyShipped ? "shipped" : "  ideal")
+                << " worst (at)   p95     max   worst sample and pair      A/F2/F11->D65 worst  "
+                   "ns/pixel\n";
             for (const std::string& m : options.methods)
             {
                 if (FindMethod(m).needsCamera)
@@ -59,11 +60,18 @@ std::string AccuracyReport(const AccuracyResult& result)
                 const auto lecture =
                     WorstExposure(rows, m, set.name, shippedF, options.exposures, lecturePairs);
                 const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped, key, "cie"});
+                // Without shipped forms (--ideal-only) the shipped column is
+                // empty, and the worst exposure is the ideal form's.
+                char shippedMean[16] = "       -";
+                if (hasShipped)
+                {
+                    std::snprintf(shippedMean, sizeof shippedMean, "%8.2f", shipped.mean);
+                }
                 char line[320];
                 std::snprintf(
                     line, sizeof line,
-                    "  %-10s %7.2f %8.2f %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
-                    m.c_str(), ideal.mean, shipped.mean, worst.second, Stops(worst.first).c_str(),
+                    "  %-10s %7.2f %s %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
+                    m.c_str(), ideal.mean, shippedMean, worst.second, Stops(worst.first).c_str(),
                     all.p95, all.max, all.worst.c_str(), lecture.second,
                     costAll.count(m) ? Fixed(costAll.at(m), 2).c_str() : "-");
                 out << line;
