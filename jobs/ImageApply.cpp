@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <thread>
 
 #include "plugin/ConfigBuilder.h"
@@ -120,6 +121,19 @@ BufferWork KernelWork(const ClampMatrixKernel& kernel, int threads)
     };
 }
 
+namespace
+{
+/// A format that holds no integer code values (OpenEXR: half, float): an
+/// integer image written there becomes float values read as linear.
+bool IsFloatOnlyFile(const std::string& path)
+{
+    const std::string ext = std::filesystem::path(path).extension().string();
+    return ext.size() == 4 && std::tolower(static_cast<unsigned char>(ext[1])) == 'e' &&
+           std::tolower(static_cast<unsigned char>(ext[2])) == 'x' &&
+           std::tolower(static_cast<unsigned char>(ext[3])) == 'r';
+}
+}  // namespace
+
 std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
                                       const std::string& out, const std::string& note,
                                       const ImageColourRequest& colour)
@@ -146,6 +160,16 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
                             "cannot hold the scene-linear " +
                             encoding.describe() + " of " + in +
                             ": write an EXR (or convert it afterwards, e.g. oiiotool "
+                            "--colorconvert)");
+        }
+        if (display && IsFloatOnlyFile(out))
+        {
+            // The result would be display code values in a file every host
+            // reads as scene-linear, with nothing to say otherwise.
+            throw Exception(out + ": " + in + " holds " + encoding.describe() +
+                            " code values, which a float format would carry untagged and "
+                            "every host would read as linear: write the same format as " + in +
+                            " (or convert it to linear EXR first, e.g. oiiotool "
                             "--colorconvert)");
         }
         const std::string working = SpaceLabel(*colour.working);

@@ -236,3 +236,20 @@ TEST_CASE("OUT patterns with two frame fields expand both", "[cli][mistakes]")
     CHECK(r.code == 0);
     CHECK(fs::is_regular_file(dir + "/out.07.0007.exr"));
 }
+
+TEST_CASE("A PNG's code values are not written into an EXR read as linear", "[cli][mistakes]")
+{
+    const std::string dir = Folder("png_to_exr");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/chart.exr'")
+                .code == 0);
+    REQUIRE(Sh("oiiotool '" + dir + "/chart.exr' --colorconvert linear sRGB -d uint8 -o '" + dir +
+               "/chart.png'")
+                .code == 0);
+    CheckOneLine(Bandlight("apply '" + dir + "/chart.png' '" + dir + "/out.exr' --from A --to D65"),
+                 "every host would read as linear");
+    CHECK(!fs::exists(dir + "/out.exr"));
+    // PNG to PNG stays as it was: decoded, relit, encoded again.
+    CHECK(Bandlight("apply '" + dir + "/chart.png' '" + dir + "/out.png' --from A --to D65").code ==
+          0);
+}
