@@ -162,10 +162,11 @@ std::string DescribeRootPolyCamera(const MethodSpec& m)
            "measured remittances): not linear, baked into a 3D LUT with a log2 shaper.";
 }
 
-std::vector<MethodEntry> MakeMethods()
+/// The methods that are one 3×3: the von Kries family, the band model and
+/// the fitted matrices.
+void AddMatrixMethods(std::vector<MethodEntry>& all)
 {
     using K = MethodKernel;
-    std::vector<MethodEntry> all;
 
     MethodEntry none = Entry(ChangeMethod::NONE, "none", K::MATRIX, BANDLIGHT_EXACT(NONE, "none"),
                              BANDLIGHT_TEXT("Identity: the image is left as it is (the baseline "
@@ -243,6 +244,12 @@ std::vector<MethodEntry> MakeMethods()
     metamer.litMatrix = &detail::MetamerFit;
     metamer.accuracyDefaults = {"metamer"};
     all.push_back(metamer);
+}
+
+/// The methods that are not one 3×3, and the spectral reference.
+void AddPixelMethods(std::vector<MethodEntry>& all)
+{
+    using K = MethodKernel;
 
     MethodEntry upsample =
         Entry(ChangeMethod::UPSAMPLE, "upsample", K::UPSAMPLE, BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
@@ -282,6 +289,13 @@ std::vector<MethodEntry> MakeMethods()
         Entry(ChangeMethod::SPECTRAL, "spectral", K::SPECTRAL, BANDLIGHT_EXACT(SPECTRAL, "spectral"),
               BANDLIGHT_TEXT("The exact spectral answer for known remittances: the reference."));
     all.push_back(spectral);
+}
+
+std::vector<MethodEntry> MakeMethods()
+{
+    std::vector<MethodEntry> all;
+    AddMatrixMethods(all);
+    AddPixelMethods(all);
     return all;
 }
 
