@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `bandlight plot`: the lecture's pictures — a spectrum and its band means as
+// `bandlight plot`: the band model's pictures — a spectrum and its band means as
 // steps, for the matching functions, an illuminant or a test colour (the plot
 // job, jobs/PlotJob.h).
 #include <iostream>

@@ -101,7 +101,8 @@ PlotResult MakePlot(const PlotRequest& r, Reporter& reporter)
     {
         const Light s = ResolveIlluminant(r.illuminant, reporter);
         curves = {{s.name, s.spectrum}};
-        // The lecture normalises illuminant band means to the largest band = 1.
+        // The band model normalises illuminant band means to the largest band = 1
+        // (docs/science.md §1.2).
         const std::vector<double> means = BandMeans(s.spectrum, bands);
         curves[0].scale = 1.0 / *std::max_element(means.begin(), means.end());
         result.title = "Illuminant " + s.name + " and its band means (largest band = 1)";

@@ -10,7 +10,7 @@
 namespace bandlight::jobs
 {
 
-/// `plot`: the lecture's pictures — a spectrum and its band means as steps,
+/// `plot`: the band model's pictures — a spectrum and its band means as steps,
 /// for the matching functions, an illuminant or remittances.
 struct PlotRequest
 {
@@ -34,7 +34,7 @@ struct PlotResult
 
 /// Draws the plot of `request` through gnuplot (RunGnuplot) into `out`,
 /// replaced whole or not at all. An illuminant is scaled so that its
-/// largest band mean is 1, as the lecture normalises it. Throws
+/// largest band mean is 1, as the band model normalises it. Throws
 /// ParameterError unless exactly one of cmf, illuminant, reflectance is
 /// given, Exception for bands outside the spectra's range.
 PlotResult MakePlot(const PlotRequest& request, Reporter& reporter = SilentReporter());
