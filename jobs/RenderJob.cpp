@@ -1,11 +1,150 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/RenderJob.h"
 
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+#include "jobs/ImageApply.h"
+#include "jobs/Inputs.h"
+#include "jobs/SpectralJob.h"
+#include "plugin/ConfigBuilder.h"
+#include "plugin/OcioTransforms.h"
+#include "render/SceneColour.h"
 #include "render/SceneFile.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectralImage.h"
 
 namespace bandlight::jobs
 {
+
+namespace
+{
+
+/// `path` without its extension ("shots/a.exr" → "shots/a").
+std::string Stem(const std::string& path)
+{
+    const size_t slash = path.find_last_of('/');
+    const size_t dot = path.find_last_of('.');
+    return dot != std::string::npos && (slash == std::string::npos || dot > slash)
+               ? path.substr(0, dot)
+               : path;
+}
+
+bool BandOutput(const Scene& scene)
+{
+    return scene.settings.output == "bands";
+}
+
+/// The sRGB preview of a working-space image through OCIO: the working
+/// space to Rec.709 as a config's colour spaces convert it (Bradford
+/// between the whites), then the sRGB curve.
+std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working)
+{
+    OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+    g->appendTransform(MakeMatrixTransform(SpaceToSpace(working, FindRgbSpace("rec709"))));
+    OCIO::TransformRcPtr encode = SrgbDecode();
+    encode->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+    g->appendTransform(encode);
+    std::vector<float> px = img.pixels;
+    const int rgb[3] = {0, 1, 2};
+    ApplyToBuffer(OCIO::Config::CreateRaw()->getProcessor(g)->getDefaultCPUProcessor(), px.data(),
+                  img.width, img.height, 3, rgb, 0);
+    return px;
+}
+
+std::string Size(const RenderedImage& img)
+{
+    return std::to_string(img.width) + "x" + std::to_string(img.height);
+}
+
+/// Band values, tagged as what they are: not RGB.
+RenderFile WriteBandValues(const RenderedImage& img, const std::string& out, const BandSet& bands,
+                           OutputSet& outputs)
+{
+    ImageDescription d;
+    d.colorSpace = "bands";
+    d.attributes.push_back(
+        {"bandlight:channels", "band values (radiometric), not RGB: " + bands.describe()});
+    d.attributes.push_back({"bandlight:colorSpace", "bands"});
+    // Each channel's band, for readers (bandlight spectral reads them as buckets).
+    std::string list;
+    for (const Band& b : bands)
+    {
+        list +=
+            (list.empty() ? "" : ",") + b.name + " " + Fixed(b.minNm, 3) + "-" + Fixed(b.maxNm, 3);
+    }
+    d.attributes.push_back({"bandlight:bands", list});
+    d.attributes.push_back({"colorInteropID", "data"});
+    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
+               PixelType::FLOAT, &outputs);
+    return {out, Size(img) + ", " + std::to_string(img.channels) + " band channels"};
+}
+
+/// Linear RGB, with the spectral radiance beside it when `spectra`.
+RenderFile WriteRgb(const RenderedImage& img, const std::string& out, const RgbSpace& space,
+                    const RenderedImage* spectra, OutputSet& outputs)
+{
+    const ImageDescription linear = LinearImageDescription(space, ColorSpaceName(space));
+    if (!spectra)
+    {
+        WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
+                   linear, PixelType::FLOAT, &outputs);
+        return {out, Size(img) + ", " + std::to_string(img.channels) + " channels, " +
+                         ColorSpaceName(space)};
+    }
+    std::vector<double> wavelengths;
+    for (const std::string& name : spectra->channelNames)
+    {
+        wavelengths.push_back(ParseSpectralChannel(name)->wavelengthNm);
+    }
+    WriteSpectralImage(out, img.width, img.height, SpectralKind::EMISSIVE, wavelengths,
+                       spectra->pixels, img.pixels, linear, &outputs);
+    return {out, Size(img) + ", R, G, B in " + ColorSpaceName(space) + " and " +
+                     std::to_string(wavelengths.size()) +
+                     " spectral radiance channels, Fichet 2021 layout"};
+}
+
+/// ΔE00 of `img` against the spectral reference `ref`, per pixel hit:
+/// L*a*b* relative to the equal-energy white at the lights' summed level.
+DeltaEMap CompareWithReference(const Scene& scene, const RenderedImage& img,
+                               const RenderedImage& ref)
+{
+    const Mat3 toXyz = RgbToXyzMatrix(FindRgbSpace(scene.settings.output).chromaticities);
+    double level = 0.0;
+    for (const SceneLight& l : scene.lights)
+    {
+        level += l.intensity;
+    }
+    const Vec3 white = Vec3::Ones() * std::max(level, 1e-6);
+    DeltaEMap map(img.width, img.height);
+    const size_t count = size_t(img.width) * size_t(img.height);
+    for (size_t i = 0; i < count; ++i)
+    {
+        const float* a = &img.pixels[3 * i];
+        const float* b = &ref.pixels[3 * i];
+        const Vec3 xa = toXyz * Vec3(a[0], a[1], a[2]);
+        const Vec3 xb = toXyz * Vec3(b[0], b[1], b[2]);
+        if (xa.isZero(0.0) && xb.isZero(0.0))
+        {
+            continue;  // background
+        }
+        map.set(i, DeltaE2000(XyzToLab(xa, white), XyzToLab(xb, white)));
+    }
+    return map;
+}
+
+/// "band3", "band6" or "spectral": the mode as --mode names it.
+std::string ModeName(const RenderSettings& s)
+{
+    return s.mode == RenderSettings::Mode::SPECTRAL ? "spectral"
+                                                    : "band" + std::to_string(s.bands.size());
+}
+
+}  // namespace
 
 Scene LoadScene(const std::string& path, const std::optional<std::string>& text,
                 const std::string& source, const std::optional<std::string>& mode)
@@ -28,6 +167,163 @@ Scene LoadScene(const std::string& path, const std::optional<std::string>& text,
         SetRenderMode(scene.settings, *mode);
     }
     return scene;
+}
+
+std::string DefaultRenderOutput(const std::string& scenePath)
+{
+    return Stem(scenePath) + ".exr";
+}
+
+PreparedRender PrepareRender(const RenderRequest& request)
+{
+    PreparedRender p;
+    p.request = request;
+    p.scene = LoadScene(request.scene, request.text, request.source, request.mode);
+    // Unplanned, the explanation says what the literal path does, not what
+    // a plan would.
+    if (!request.unplanned)
+    {
+        p.plan = PlanScene(p.scene);
+    }
+    p.explanation = request.unplanned ? ExplainUnplanned(p.scene) : ExplainPlan(p.scene, p.plan);
+    return p;
+}
+
+void CheckRenderOutputs(const PreparedRender& prepared)
+{
+    const RenderRequest& r = prepared.request;
+    const Scene& scene = prepared.scene;
+    if (r.explain)
+    {
+        return;  // nothing is written
+    }
+    if (r.spectra)
+    {
+        if (scene.settings.mode != RenderSettings::Mode::SPECTRAL)
+        {
+            throw ParameterError(
+                "{spectra} needs spectral mode ({mode=}spectral): band mode has no spectrum to "
+                "write");
+        }
+        if (BandOutput(scene))
+        {
+            throw ParameterError(
+                "{spectra} writes R, G, B beside the spectrum: give an RGB output");
+        }
+    }
+    if (r.compare && BandOutput(scene))
+    {
+        throw ParameterError("{compare} needs an RGB output: the spectral reference has no bands");
+    }
+    if (!r.previewPath.empty() && r.preview && BandOutput(scene))
+    {
+        throw ParameterError("{preview} shows RGB: band values (output: bands) have no preview");
+    }
+    if (r.out.empty())
+    {
+        if (r.spectra)
+        {
+            throw ParameterError("{spectra} writes the spectrum into the render's EXR: give {out}");
+        }
+        if (r.compare)
+        {
+            throw ParameterError("{compare} writes its ΔE00 map beside the render: give {out}");
+        }
+        if (!r.previewPath.empty() && r.preview)
+        {
+            throw ParameterError("{preview} is the picture of a render written: give {out}");
+        }
+    }
+}
+
+std::vector<std::string> RenderResult::written() const
+{
+    std::vector<std::string> all;
+    for (const RenderFile& f : files)
+    {
+        all.push_back(f.path);
+    }
+    if (comparison)
+    {
+        all.push_back(comparison->exr);
+        all.push_back(comparison->png);
+    }
+    return all;
+}
+
+RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
+{
+    (void)reporter;  // the render has nothing to note; the parameter keeps the jobs' shape
+    const RenderRequest& r = prepared.request;
+    const Scene& scene = prepared.scene;
+    RenderResult result;
+    result.explanation = prepared.explanation;
+    if (r.explain)
+    {
+        return result;
+    }
+    CheckRenderOutputs(prepared);
+    const auto t0 = std::chrono::steady_clock::now();
+    result.image = r.unplanned ? RenderSceneUnplanned(scene, r.threads, &result.counters)
+                               : RenderScene(scene, prepared.plan, r.threads, &result.counters);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (r.out.empty())
+    {
+        return result;
+    }
+    const RenderedImage& img = result.image;
+    // The render, its preview and the comparison's map are one set.
+    OutputSet outputs;
+    if (BandOutput(scene))
+    {
+        result.files.push_back(WriteBandValues(img, r.out, scene.settings.bands, outputs));
+    }
+    else
+    {
+        std::optional<RenderedImage> spectra;
+        if (r.spectra)
+        {
+            Scene radiance = scene;
+            radiance.settings.output = detail::SPECTRUM_OUTPUT;
+            spectra = RenderScene(radiance, PlanScene(radiance), r.threads);
+        }
+        const RgbSpace& space = FindRgbSpace(scene.settings.output);
+        result.files.push_back(WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
+        if (r.preview)
+        {
+            const std::string png = r.previewPath.empty() ? Stem(r.out) + ".png" : r.previewPath;
+            const std::vector<float> preview = SrgbPreview(img, space);
+            ImageDescription srgb;
+            srgb.colorSpace = "sRGB";
+            WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, srgb,
+                       PixelType::UINT8, &outputs);
+            result.files.push_back({png, "sRGB preview"});
+        }
+    }
+    if (r.compare)
+    {
+        Scene reference = scene;
+        reference.settings.mode = RenderSettings::Mode::SPECTRAL;
+        const RenderedImage ref = RenderScene(reference, PlanScene(reference), r.threads);
+        const DeltaEMap map = CompareWithReference(scene, img, ref);
+        RenderComparison c;
+        c.summary = map.summary();
+        c.exr = Stem(r.out) + "_dE00.exr";
+        c.png = Stem(r.out) + "_dE00.png";
+        std::ostringstream title;
+        title << "CIEDE2000 of the " << ModeName(scene.settings)
+              << " render against the spectral reference: mean " << Fixed(c.summary.mean, 2)
+              << ", p95 " << Fixed(c.summary.p95, 2) << ", max " << Fixed(c.summary.max, 2);
+        WriteDeltaEMap(map, c.exr, c.png, title.str(), {}, outputs);
+        result.comparison = c;
+    }
+    outputs.commit();
+    return result;
+}
+
+RenderResult MakeRender(const RenderRequest& request, Reporter& reporter)
+{
+    return MakeRender(PrepareRender(request), reporter);
 }
 
 }  // namespace bandlight::jobs

@@ -9,8 +9,7 @@
 
 #include <Eigen/LU>
 
-#include "jobs/Gnuplot.h"
-#include "jobs/ImageApply.h"
+#include "jobs/DeltaEMap.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
@@ -245,73 +244,33 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
         const Relighter relighter = relight.relighter(reporter);
         std::vector<float> result = plate;
         relighter.apply(result.data(), count, 0);
-        std::vector<float> map(count, 0.0f);
-        std::vector<double> values;
+        DeltaEMap map(image.width, image.height);
         for (size_t p = 0; p < count; ++p)
         {
-            if (!lit[p])
+            if (lit[p])
             {
-                continue;
+                const Vec3 rgb(result[3 * p], result[3 * p + 1], result[3 * p + 2]);
+                map.set(p, DeltaE2000(XyzToLab(toXyz * rgb, white), reference[p]));
             }
-            const Vec3 rgb(result[3 * p], result[3 * p + 1], result[3 * p + 2]);
-            const double e = DeltaE2000(XyzToLab(toXyz * rgb, white), reference[p]);
-            map[p] = float(e);
-            values.push_back(e);
         }
+        const DeltaESummary summary = map.summary();
         HeatmapSummary h;
         h.method = name;
-        double sum = 0.0;
-        for (const double e : values)
-        {
-            sum += e;
-        }
-        h.mean = values.empty() ? 0.0 : sum / double(values.size());
-        h.p95 = Percentile(values, 0.95);
-        h.max = Percentile(values, 1.0);
+        h.mean = summary.mean;
+        h.p95 = summary.p95;
+        h.max = summary.max;
         const std::string base = dir + "/" + FileStem(path) + "_" + Safe(name) + "_dE00";
         h.exr = base + ".exr";
         h.png = base + ".png";
-        ImageDescription data;
-        data.colorSpace = "data";
-        data.attributes.push_back({"bandlight:transform", "CIEDE2000 of " + name + ", " +
-                                                              o.from.name + " -> " + o.to.name +
-                                                              " against the exact relight"});
-        WriteImage(h.exr, map.data(), image.width, image.height, 1, {"dE00"}, data,
-                   PixelType::FLOAT, &outputs);
-        // The colour map: block means on at most 400 columns, 0–10 ΔE00.
-        const size_t block = std::max<size_t>(1, (size_t(image.width) + 399) / 400);
-        std::ostringstream matrix;
-        for (size_t by = 0; by < size_t(image.height); by += block)
-        {
-            for (size_t bx = 0; bx < size_t(image.width); bx += block)
-            {
-                double s = 0.0;
-                int k = 0;
-                for (size_t y = by; y < std::min(by + block, size_t(image.height)); ++y)
-                {
-                    for (size_t x = bx; x < std::min(bx + block, size_t(image.width)); ++x)
-                    {
-                        s += map[y * size_t(image.width) + x];
-                        ++k;
-                    }
-                }
-                matrix << (bx ? " " : "") << s / std::max(k, 1);
-            }
-            matrix << "\n";
-        }
         std::ostringstream title;
         title << "CIEDE2000 of " << name << ", " << o.from.name << " -> " << o.to.name << " ("
               << (balanced ? "balanced" : "lit") << " plates): mean " << Fixed(h.mean, 2)
               << ", p95 " << Fixed(h.p95, 2) << ", max " << Fixed(h.max, 2);
-        const std::string script =
-            "set title " + GnuplotQuote(title.str()) + " font ',10'\n" +
-            "set size ratio -1\nunset key\nunset xtics\nunset ytics\n"
-            "set yrange [*:*] reverse\nset cbrange [0:10]\n"
-            "set cblabel 'CIEDE2000 (10 and above: white)'\n"
-            "set palette defined (0 '#000004', 2 '#3b0f70', 4 '#8c2981', 6 '#de4968', "
-            "8 '#fe9f6d', 10 '#fcfdbf')\n"
-            "plot $bandlight_data matrix with image\n";
-        RunGnuplot(script, matrix.str(), h.png, &outputs);
+        WriteDeltaEMap(
+            map, h.exr, h.png, title.str(),
+            {{"bandlight:transform", "CIEDE2000 of " + name + ", " + o.from.name + " -> " +
+                                         o.to.name + " against the exact relight"}},
+            outputs);
         summaries.push_back(h);
     }
     outputs.commit();

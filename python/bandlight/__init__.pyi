@@ -314,8 +314,16 @@ def _apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           camera: Optional[StrPath] = None, camera_idt: str = "D55",
           threads: int = 0, skip_existing: bool = False,
           keep_going: bool = False) -> ApplyResult: ...
+@overload
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
-           mode: Optional[str] = None, threads: int = 0, unplanned: bool = False) -> Float32Array: ...
+           mode: Optional[str] = None, threads: int = 0, unplanned: bool = False,
+           out: None = None, spectra: bool = False, compare: bool = False,
+           preview: Union[bool, StrPath] = True) -> Float32Array: ...
+@overload
+def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
+           mode: Optional[str] = None, threads: int = 0, unplanned: bool = False,
+           out: StrPath, spectra: bool = False, compare: bool = False,
+           preview: Union[bool, StrPath] = True) -> Dict[str, Any]: ...
 def explain_scene(scene: Optional[StrPath] = None, *, text: Optional[str] = None,
                   source: str = "<scene>", mode: Optional[str] = None,
                   unplanned: bool = False) -> str: ...

@@ -88,3 +88,62 @@ def test_scene_errors_name_file_and_line(tmp_path):
         bandlight.render(SCENES / "counterexample.yaml", mode="spectral")
     with pytest.raises(ValueError, match="one of the two"):
         bandlight.render()
+
+
+def image_bytes(path):
+    """A written image's bytes without the time stamp OpenImageIO puts into
+    EXRs (capDate), as tests/docs/run_examples.py compares them."""
+    import re
+    return re.sub(rb"(capDate\0string\0\x13\0\0\0)[^\0]{19}", lambda m: m.group(1) + b"0" * 19,
+                  path.read_bytes())
+
+
+@pytest.mark.parametrize("mode, spectra", [("spectral", True), ("band3", False)])
+def test_render_out_writes_the_commands_files(tmp_path, mode, spectra):
+    scene = tmp_path / "small.yaml"
+    scene.write_text(SMALL)
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "py").mkdir()
+    flags = ["--mode", mode, "--compare"] + (["--spectra"] if spectra else [])
+    printed = run_cli("render", scene, "-o", tmp_path / "cli" / "small.exr", *flags).stdout
+    result = bandlight.render(scene, mode=mode, out=tmp_path / "py" / "small.exr",
+                              compare=True, spectra=spectra)
+    names = ["small.exr", "small.png", "small_dE00.exr", "small_dE00.png"]
+    assert result["files"] == [str(tmp_path / "py" / n) for n in names]
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == sorted(names)
+    for name in names:
+        assert image_bytes(tmp_path / "py" / name) == image_bytes(tmp_path / "cli" / name), name
+    assert (result["width"], result["height"], result["channels"]) == (40, 30, 3)
+    assert result["image"].shape == (30, 40, 3)
+    if not spectra:
+        np.testing.assert_array_equal(result["image"], read_image(tmp_path / "py" / "small.exr"))
+    c = result["comparison"]
+    assert c["exr"] == str(tmp_path / "py" / "small_dE00.exr")
+    assert f"compare with spectral: {c['pixels']} pixels, ΔE00 mean {c['mean']:.3f}, " \
+           f"p95 {c['p95']:.3f}, max {c['max']:.3f}" in printed
+    assert (c["max"] == 0.0) == (mode == "spectral")
+    assert printed.startswith(result["explanation"])
+    assert f"rendered {result['counters']['pixels']} pixels " in printed
+
+
+def test_render_preview_where_asked(tmp_path):
+    result = bandlight.render(text=SMALL, out=tmp_path / "a.exr", preview=False)
+    assert result["files"] == [str(tmp_path / "a.exr")]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.exr"]
+    (tmp_path / "previews").mkdir()
+    result = bandlight.render(text=SMALL, out=tmp_path / "b.exr",
+                              preview=tmp_path / "previews" / "b.png")
+    assert result["files"] == [str(tmp_path / "b.exr"), str(tmp_path / "previews" / "b.png")]
+    assert result["comparison"] is None
+
+
+def test_render_refuses_outputs_that_do_not_go_together(tmp_path):
+    with pytest.raises(ValueError, match=r"^spectra needs spectral mode \(mode=spectral\)"):
+        bandlight.render(text=SMALL, out=tmp_path / "a.exr", spectra=True)
+    with pytest.raises(ValueError, match=r"^compare writes its ΔE00 map beside the render: give out$"):
+        bandlight.render(text=SMALL, compare=True)
+    with pytest.raises(ValueError, match=r"^spectra needs spectral mode"):
+        bandlight.render(text=SMALL, out=tmp_path / "missing" / "a.exr", spectra=True)
+    with pytest.raises(FileNotFoundError):
+        bandlight.render(text=SMALL, out=tmp_path / "missing" / "a.exr")
+    assert list(tmp_path.iterdir()) == []

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "jobs/DeltaEMap.h"
+
+#include <algorithm>
+#include <cassert>
+#include <sstream>
+
+#include "jobs/Gnuplot.h"
+#include "jobs/ImageApply.h"
+#include "transforms/Accuracy.h"
+
+namespace bandlight::jobs
+{
+
+DeltaEMap::DeltaEMap(int width, int height)
+    : m_width(width), m_height(height), m_values(size_t(width) * size_t(height), 0.0f)
+{
+}
+
+void DeltaEMap::set(size_t index, double deltaE)
+{
+    assert(index < m_values.size());
+    m_values[index] = float(deltaE);
+    m_measured.push_back(deltaE);
+}
+
+DeltaESummary DeltaEMap::summary() const
+{
+    DeltaESummary s;
+    s.pixels = m_measured.size();
+    double sum = 0.0;
+    for (const double e : m_measured)
+    {
+        sum += e;
+    }
+    s.mean = m_measured.empty() ? 0.0 : sum / double(m_measured.size());
+    s.p95 = Percentile(m_measured, 0.95);
+    s.max = Percentile(m_measured, 1.0);
+    return s;
+}
+
+void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::string& png,
+                    const std::string& title,
+                    const std::vector<std::pair<std::string, std::string>>& attributes,
+                    OutputSet& outputs)
+{
+    ImageDescription data;
+    data.colorSpace = "data";
+    data.attributes = attributes;
+    WriteImage(exr, map.values().data(), map.width(), map.height(), 1, {"dE00"}, data,
+               PixelType::FLOAT, &outputs);
+    // The colour map: block means on at most 400 columns.
+    const size_t width = size_t(map.width());
+    const size_t height = size_t(map.height());
+    const std::vector<float>& values = map.values();
+    const size_t block = std::max<size_t>(1, (width + 399) / 400);
+    std::ostringstream matrix;
+    for (size_t by = 0; by < height; by += block)
+    {
+        for (size_t bx = 0; bx < width; bx += block)
+        {
+            double s = 0.0;
+            int k = 0;
+            for (size_t y = by; y < std::min(by + block, height); ++y)
+            {
+                for (size_t x = bx; x < std::min(bx + block, width); ++x)
+                {
+                    s += values[y * width + x];
+                    ++k;
+                }
+            }
+            matrix << (bx ? " " : "") << s / std::max(k, 1);
+        }
+        matrix << "\n";
+    }
+    // A perceptually ordered palette (matplotlib's magma) from black to
+    // near-white, so the map reads in grey too.
+    std::ostringstream script;
+    script << "set title " << GnuplotQuote(title) << " font ',10'\n"
+           << "set size ratio -1\nunset key\nunset xtics\nunset ytics\n"
+              "set yrange [*:*] reverse\nset cbrange [0:"
+           << kDeltaEMapTop << "]\n"
+           << "set cblabel 'CIEDE2000 (" << kDeltaEMapTop << " and above: white)'\n"
+           << "set palette defined (0 '#000004', 2 '#3b0f70', 4 '#8c2981', 6 '#de4968', "
+              "8 '#fe9f6d', 10 '#fcfdbf')\n"
+              "plot $bandlight_data matrix with image\n";
+    RunGnuplot(script.str(), matrix.str(), png, &outputs);
+}
+
+}  // namespace bandlight::jobs
