@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "luts/LutWriter.h"
-#include "plugin/OcioTransforms.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/luts/LutWriter.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/spectral/Illuminants.h"
 
 using namespace bandlight;
 

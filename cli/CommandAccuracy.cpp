@@ -6,9 +6,9 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "jobs/AccuracyJob.h"
-#include "jobs/Defaults.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/jobs/AccuracyJob.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {

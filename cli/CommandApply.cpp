@@ -7,8 +7,8 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
-#include "jobs/ApplyJob.h"
-#include "spectral/Parallel.h"
+#include "bandlight/jobs/ApplyJob.h"
+#include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::cli
 {

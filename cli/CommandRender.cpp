@@ -9,8 +9,8 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "jobs/RenderJob.h"
-#include "spectral/Parallel.h"
+#include "bandlight/jobs/RenderJob.h"
+#include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::cli
 {

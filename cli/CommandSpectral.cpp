@@ -7,10 +7,10 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
-#include "jobs/SpectralJob.h"
-#include "spectral/Parallel.h"
-#include "jobs/Defaults.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/jobs/SpectralJob.h"
+#include "bandlight/spectral/Parallel.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {

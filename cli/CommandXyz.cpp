@@ -5,7 +5,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "jobs/ColourJobs.h"
+#include "bandlight/jobs/ColourJobs.h"
 
 namespace bandlight::cli
 {

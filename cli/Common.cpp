@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/Common.h"
-#include "spectral/Parallel.h"
+#include "bandlight/spectral/Parallel.h"
 
 #include <iostream>
 
 #include "cli/Diagnostics.h"
-#include "jobs/Defaults.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {

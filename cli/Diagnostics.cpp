@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::cli
 {

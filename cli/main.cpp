@@ -10,9 +10,9 @@
 
 #include "cli/Commands.h"
 #include "cli/Diagnostics.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/Exception.h"
-#include "transforms/Defaults.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/transforms/Defaults.h"
 
 int main(int argc, char** argv)
 {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The accuracy job: the measurement, its JSON document and its plot.
-#include "jobs/AccuracyJob.h"
+#include "bandlight/jobs/AccuracyJob.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,14 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "jobs/Frames.h"
-#include "jobs/Gnuplot.h"
-#include "jobs/OutputPaths.h"
-#include "jobs/detail/AccuracySummary.h"
-#include "jobs/detail/PlotLabels.h"
-#include "plugin/OcioTransforms.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/Exception.h"
+#include "bandlight/jobs/Frames.h"
+#include "bandlight/jobs/Gnuplot.h"
+#include "bandlight/jobs/OutputPaths.h"
+#include "bandlight/jobs/detail/AccuracySummary.h"
+#include "bandlight/jobs/detail/PlotLabels.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

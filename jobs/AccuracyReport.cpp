@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "jobs/AccuracyJob.h"
-#include "jobs/detail/AccuracySummary.h"
+#include "bandlight/jobs/AccuracyJob.h"
+#include "bandlight/jobs/detail/AccuracySummary.h"
 
 namespace bandlight::jobs
 {

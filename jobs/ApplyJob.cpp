@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/ApplyJob.h"
+#include "bandlight/jobs/ApplyJob.h"
 
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <set>
 
-#include "jobs/Frames.h"
-#include "jobs/ImageApply.h"
-#include "plugin/OcioTransforms.h"
-#include "plugin/SceneLinearEvidence.h"
-#include "spectral/Exception.h"
-#include "spectral/Parallel.h"
+#include "bandlight/jobs/Frames.h"
+#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/plugin/SceneLinearEvidence.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::jobs
 {

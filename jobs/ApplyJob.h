@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Frames.h"
-#include "jobs/Inputs.h"
+#include "bandlight/jobs/Frames.h"
+#include "bandlight/jobs/Inputs.h"
 
 namespace bandlight::jobs
 {

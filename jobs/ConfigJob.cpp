@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/ConfigJob.h"
+#include "bandlight/jobs/ConfigJob.h"
 
 #include <filesystem>
 
-#include "jobs/OutputPaths.h"
-#include "spectral/Exception.h"
+#include "bandlight/jobs/OutputPaths.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "transforms/IlluminantChange.h"
+#include "bandlight/transforms/IlluminantChange.h"
 
 namespace bandlight::jobs
 {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/DeltaEMap.h"
+#include "bandlight/jobs/DeltaEMap.h"
 
 #include <algorithm>
 #include <cassert>
 #include <sstream>
 
-#include "jobs/Gnuplot.h"
-#include "jobs/ImageApply.h"
-#include "transforms/Accuracy.h"
+#include "bandlight/jobs/Gnuplot.h"
+#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/transforms/Accuracy.h"
 
 namespace bandlight::jobs
 {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "spectral/AtomicFile.h"
+#include "bandlight/spectral/AtomicFile.h"
 
 namespace bandlight::jobs
 {

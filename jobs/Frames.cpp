@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Frames.h"
+#include "bandlight/jobs/Frames.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include <thread>
 #include <unordered_set>
 
-#include "jobs/OutputPaths.h"
-#include "spectral/Exception.h"
+#include "bandlight/jobs/OutputPaths.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

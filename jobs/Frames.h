@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
+#include "bandlight/jobs/Reporter.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Gnuplot.h"
+#include "bandlight/jobs/Gnuplot.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -14,8 +14,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "spectral/AtomicFile.h"
-#include "spectral/Exception.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "spectral/AtomicFile.h"
+#include "bandlight/spectral/AtomicFile.h"
 
 namespace bandlight::jobs
 {

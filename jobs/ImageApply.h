@@ -8,11 +8,11 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "jobs/ImageColour.h"
-#include "jobs/ImageFiles.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/RgbSpaces.h"
-#include "transforms/PixelKernels.h"
+#include "bandlight/jobs/ImageColour.h"
+#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/RgbSpaces.h"
+#include "bandlight/transforms/PixelKernels.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/ImageColour.h"
+#include "bandlight/jobs/ImageColour.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "plugin/ConfigBuilder.h"
-#include "plugin/OcioTransforms.h"
-#include "spectral/Exception.h"
+#include "bandlight/plugin/ConfigBuilder.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

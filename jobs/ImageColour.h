@@ -12,8 +12,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "jobs/ImageFiles.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight::jobs
 {

@@ -10,9 +10,9 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "jobs/ImageFiles.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/Exception.h"
+#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Inputs.h"
+#include "bandlight/jobs/Inputs.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,9 +8,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "plugin/ConfigReferences.h"
-#include "spectral/Exception.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/plugin/ConfigReferences.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Illuminants.h"
 
 namespace bandlight::jobs
 {

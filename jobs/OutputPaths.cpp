@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/OutputPaths.h"
+#include "bandlight/jobs/OutputPaths.h"
 
 #include <cerrno>
 #include <cstring>
@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight::jobs
 {

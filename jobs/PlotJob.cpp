@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/PlotJob.h"
+#include "bandlight/jobs/PlotJob.h"
 
 #include <algorithm>
 #include <sstream>
 
-#include "jobs/Gnuplot.h"
-#include "jobs/Inputs.h"
-#include "spectral/CieData.h"
-#include "spectral/Exception.h"
-#include "spectral/Illuminants.h"
-#include "transforms/BandModel.h"
+#include "bandlight/jobs/Gnuplot.h"
+#include "bandlight/jobs/Inputs.h"
+#include "bandlight/spectral/CieData.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/BandModel.h"
 
 namespace bandlight::jobs
 {

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "jobs/DeltaEMap.h"
-#include "jobs/Reporter.h"
-#include "render/Scene.h"
-#include "render/ScenePlan.h"
-#include "render/SceneRenderer.h"
+#include "bandlight/jobs/DeltaEMap.h"
+#include "bandlight/jobs/Reporter.h"
+#include "bandlight/render/Scene.h"
+#include "bandlight/render/ScenePlan.h"
+#include "bandlight/render/SceneRenderer.h"
 
 namespace bandlight::jobs
 {

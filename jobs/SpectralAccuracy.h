@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
-#include "jobs/SpectralJob.h"
-#include "transforms/SurfaceRenderer.h"
+#include "bandlight/jobs/Reporter.h"
+#include "bandlight/jobs/SpectralJob.h"
+#include "bandlight/transforms/SurfaceRenderer.h"
 
 namespace bandlight::jobs
 {

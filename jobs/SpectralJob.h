@@ -7,12 +7,12 @@
 
 #include <Eigen/Core>
 
-#include "jobs/Frames.h"
-#include "jobs/ImageFiles.h"
-#include "jobs/Inputs.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/SpectralImage.h"
-#include "jobs/Defaults.h"
+#include "bandlight/jobs/Frames.h"
+#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/jobs/Inputs.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/SpectralImage.h"
+#include "bandlight/jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "luts/LutWriter.h"
+#include "bandlight/luts/LutWriter.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <cctype>
 #include <iomanip>
 
-#include "spectral/AtomicFile.h"
-#include "spectral/Exception.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

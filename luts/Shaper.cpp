@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "luts/Shaper.h"
+#include "bandlight/luts/Shaper.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "plugin/ConfigBuilder.h"
+#include "bandlight/plugin/ConfigBuilder.h"
 
 #include <sys/stat.h>
 
@@ -14,13 +14,13 @@
 
 #include <Eigen/LU>
 
-#include "plugin/ConfigReferences.h"
-#include "plugin/SceneLinearEvidence.h"
-#include "spectral/AtomicFile.h"
-#include "spectral/ChromaticAdaptation.h"
-#include "spectral/Exception.h"
-#include "spectral/Illuminants.h"
-#include "transforms/BandModel.h"
+#include "bandlight/plugin/ConfigReferences.h"
+#include "bandlight/plugin/SceneLinearEvidence.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/ChromaticAdaptation.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/BandModel.h"
 
 namespace bandlight
 {

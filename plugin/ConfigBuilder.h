@@ -6,9 +6,9 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "plugin/OcioTransforms.h"
-#include "spectral/AtomicFile.h"
-#include "transforms/Defaults.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/transforms/Defaults.h"
 
 namespace bandlight
 {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "plugin/ConfigReferences.h"
+#include "bandlight/plugin/ConfigReferences.h"
 
 #include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "render/Scene.h"
+#include "bandlight/render/Scene.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

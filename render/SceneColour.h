@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "render/Scene.h"
+#include "bandlight/render/Scene.h"
 
 namespace bandlight::detail
 {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "render/Scene.h"
+#include "bandlight/render/Scene.h"
 
 namespace bandlight
 {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "render/Scene.h"
+#include "bandlight/render/Scene.h"
 
 namespace bandlight
 {

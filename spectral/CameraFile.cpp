@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/CameraFile.h"
+#include "bandlight/spectral/CameraFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,10 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "spectral/Colorimetry.h"
-#include "spectral/Exception.h"
-#include "spectral/SpectrumIO.h"
-#include "spectral/TextFile.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/SpectrumIO.h"
+#include "bandlight/spectral/TextFile.h"
 
 namespace bandlight
 {

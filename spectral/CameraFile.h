@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "spectral/CieData.h"
-#include "spectral/Spectrum.h"
+#include "bandlight/spectral/CieData.h"
+#include "bandlight/spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/ChromaticAdaptation.h"
+#include "bandlight/spectral/ChromaticAdaptation.h"
 
 #include <algorithm>
 #include <cctype>
 
 #include <Eigen/LU>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "spectral/Colorimetry.h"
+#include "bandlight/spectral/Colorimetry.h"
 
 namespace bandlight
 {

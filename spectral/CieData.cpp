@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/CieData.h"
+#include "bandlight/spectral/CieData.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "spectral/EmbeddedData.h"
-#include "spectral/Exception.h"
+#include "bandlight/spectral/EmbeddedData.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/Colorimetry.h"
+#include "bandlight/spectral/Colorimetry.h"
 
 #include <cmath>
 

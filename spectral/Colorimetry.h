@@ -3,8 +3,8 @@
 
 #include <Eigen/Core>
 
-#include "spectral/CieData.h"
-#include "spectral/Spectrum.h"
+#include "bandlight/spectral/CieData.h"
+#include "bandlight/spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/ColourRendering.h"
+#include "bandlight/spectral/ColourRendering.h"
 
 #include <cmath>
 #include <vector>
 
-#include "spectral/CieData.h"
-#include "spectral/Exception.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/spectral/CieData.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Illuminants.h"
 
 namespace bandlight
 {

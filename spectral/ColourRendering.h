@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "spectral/Colorimetry.h"
+#include "bandlight/spectral/Colorimetry.h"
 
 namespace bandlight
 {

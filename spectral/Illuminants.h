@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "spectral/Spectrum.h"
+#include "bandlight/spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/RgbSpaces.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

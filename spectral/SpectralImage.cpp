@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/SpectralImage.h"
+#include "bandlight/spectral/SpectralImage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "spectral/Exception.h"
-#include "spectral/SpectrumIO.h"
-#include "spectral/TextFile.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/SpectrumIO.h"
+#include "bandlight/spectral/TextFile.h"
 
 namespace bandlight
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "spectral/Spectrum.h"
+#include "bandlight/spectral/Spectrum.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

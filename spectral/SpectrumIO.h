@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "spectral/Spectrum.h"
+#include "bandlight/spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/BandModel.h"
+#include "bandlight/transforms/BandModel.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,8 +10,8 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "spectral/Exception.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight
 {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/BandSet.h"
+#include "bandlight/transforms/BandSet.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

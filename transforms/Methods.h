@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "spectral/ChromaticAdaptation.h"
-#include "spectral/Colorimetry.h"
-#include "spectral/RgbSpaces.h"
-#include "spectral/Spectrum.h"
-#include "spectral/SpectrumIO.h"
-#include "transforms/BandSet.h"
-#include "transforms/Camera.h"
-#include "transforms/Plates.h"
-#include "transforms/RootPolynomial.h"
+#include "bandlight/spectral/ChromaticAdaptation.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/RgbSpaces.h"
+#include "bandlight/spectral/Spectrum.h"
+#include "bandlight/spectral/SpectrumIO.h"
+#include "bandlight/transforms/BandSet.h"
+#include "bandlight/transforms/Camera.h"
+#include "bandlight/transforms/Plates.h"
+#include "bandlight/transforms/RootPolynomial.h"
 
 namespace bandlight
 {
@@ -69,12 +69,12 @@ struct MethodSpec
     /// entry's default set; TrainingOf gives the set in use).
     std::vector<NamedSpectrum> training;
     int degree = 2;  ///< rootpoly's degree
-    /// What the images are: lit by the source light (the physical change
-    /// between two lights, and this struct's default) or white-balanced to
-    /// the working white, in which case the method is wrapped in the inverse
-    /// balance for `from` and the balance for `to`. The jobs' default is
-    /// defaults::PLATES (balanced). `none` stays the identity in both
-    /// conventions: it is what doing nothing does.
+    /// What the images are: white-balanced to the working white (the
+    /// default, defaults::PLATES), in which case the method is wrapped in the
+    /// inverse balance for `from` and the balance for `to`, or lit by the
+    /// source light (Plates::Lit(): the physical change between two lights).
+    /// `none` stays the identity in both conventions: it is what doing
+    /// nothing does.
     Plates plates;
     /// Camera methods: the camera that shot the plates, and the light its
     /// one fixed IDT was fitted for (empty spectrum: the built-in light of

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/Plates.h"
+#include "bandlight/transforms/Plates.h"
 
 #include <cstdio>
 
@@ -8,8 +8,8 @@
 
 #include <Eigen/LU>
 
-#include "spectral/Exception.h"
-#include "transforms/SurfaceRenderer.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

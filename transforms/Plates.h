@@ -3,11 +3,11 @@
 
 #include <string>
 
-#include "spectral/ChromaticAdaptation.h"
-#include "spectral/Colorimetry.h"
-#include "spectral/RgbSpaces.h"
-#include "spectral/Spectrum.h"
-#include "transforms/Defaults.h"
+#include "bandlight/spectral/ChromaticAdaptation.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/RgbSpaces.h"
+#include "bandlight/spectral/Spectrum.h"
+#include "bandlight/transforms/Defaults.h"
 
 namespace bandlight
 {
@@ -22,9 +22,9 @@ enum class PlateConvention
     /// camera's IDT, rawtoaces' and the vendors' alike, balances): a
     /// tungsten plate's white is neutral and only the light's colour
     /// rendering is left in it. The look undoes the balance with the
-    /// adaptation's inverse, changes the light, and balances again, so a
-    /// neutral stays neutral and only the change in colour rendering is
-    /// applied.
+    /// adaptation's inverse, changes the light, and balances again: for a
+    /// method exact on white a neutral stays neutral and only the change in
+    /// colour rendering is applied (the band model is not exact on white).
     BALANCED,
 };
 
@@ -43,7 +43,6 @@ struct Plates
     bool balanced() const noexcept { return convention == PlateConvention::BALANCED; }
     /// "lit" or "balanced-cat02" / "balanced-bradford": for reports and JSON.
     std::string key() const;
-    /// One sentence for config and look descriptions.
     /// One sentence on the plates a look is for. For balanced plates it
     /// says what becomes of a neutral: `grey` is what the look makes of
     /// 0.18 grey (nullptr: not said).

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "transforms/SpectralMethods.h"
+#include "bandlight/transforms/SpectralMethods.h"
 
 #include <Eigen/LU>
 
-#include "spectral/Exception.h"
+#include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "transforms/SurfaceRenderer.h"
+#include "bandlight/transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

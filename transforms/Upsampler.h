@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "transforms/SurfaceRenderer.h"
+#include "bandlight/transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/detail/AccuracySummary.h"
+#include "bandlight/jobs/detail/AccuracySummary.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "transforms/Accuracy.h"
+#include "bandlight/transforms/Accuracy.h"
 
 namespace bandlight::jobs::detail
 {

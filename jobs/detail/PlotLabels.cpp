@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/detail/PlotLabels.h"
+#include "bandlight/jobs/detail/PlotLabels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "spectral/Illuminants.h"
-#include "transforms/IlluminantChange.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/IlluminantChange.h"
 
 int main(int argc, char** argv)
 {

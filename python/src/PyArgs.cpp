@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "PyBandlight.h"
-#include "spectral/Illuminants.h"
-#include "spectral/Parallel.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::python
 {

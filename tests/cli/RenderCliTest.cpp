@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 using bandlight::test::Bandlight;
 using bandlight::test::Result;

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "FuzzCheck.h"
-#include "spectral/SpectralImage.h"
+#include "bandlight/spectral/SpectralImage.h"
 
 using namespace bandlight;
 

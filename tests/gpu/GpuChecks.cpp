@@ -19,7 +19,7 @@
 
 #include "gpu/GpuRunner.h"
 #include "robustness/HardValues.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/spectral/Illuminants.h"
 
 namespace bandlight::test
 {

@@ -11,10 +11,10 @@
 #include <catch2/catch.hpp>
 
 #include "gpu/GpuChecks.h"
-#include "luts/LutWriter.h"
+#include "bandlight/luts/LutWriter.h"
 #include "robustness/HardValues.h"
-#include "spectral/CameraFile.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/spectral/CameraFile.h"
+#include "bandlight/spectral/Illuminants.h"
 
 using namespace bandlight;
 using namespace bandlight::test;

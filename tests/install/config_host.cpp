@@ -3,7 +3,7 @@
 // writes FOLDER/config.ocio (the test compares it with the command's).
 #include <iostream>
 
-#include <jobs/ConfigJob.h>
+#include <bandlight/jobs/ConfigJob.h>
 
 int main(int argc, char** argv)
 {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <iostream>
 
-#include <plugin/OcioTransforms.h>
-#include <spectral/Illuminants.h>
+#include <bandlight/plugin/OcioTransforms.h>
+#include <bandlight/spectral/Illuminants.h>
 
 int main()
 {

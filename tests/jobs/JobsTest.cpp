@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/RunCommand.h"
-#include "jobs/AccuracyJob.h"
-#include "jobs/ApplyJob.h"
-#include "jobs/ColourJobs.h"
-#include "jobs/ConfigJob.h"
-#include "jobs/ImageApply.h"
-#include "jobs/LutJob.h"
-#include "spectral/Exception.h"
+#include "bandlight/jobs/AccuracyJob.h"
+#include "bandlight/jobs/ApplyJob.h"
+#include "bandlight/jobs/ColourJobs.h"
+#include "bandlight/jobs/ConfigJob.h"
+#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LutJob.h"
+#include "bandlight/spectral/Exception.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

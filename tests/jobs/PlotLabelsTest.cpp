@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "jobs/detail/PlotLabels.h"
+#include "bandlight/jobs/detail/PlotLabels.h"
 
 using namespace bandlight::jobs::detail;
 

@@ -12,10 +12,10 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "jobs/RenderJob.h"
-#include "spectral/Colorimetry.h"
-#include "spectral/Exception.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/jobs/RenderJob.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;

@@ -7,8 +7,8 @@
 
 #include "transforms/LitMethod.h"
 
-#include "plugin/OcioTransforms.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/spectral/Illuminants.h"
 
 using namespace bandlight;
 

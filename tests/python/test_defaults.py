@@ -14,7 +14,7 @@ import pytest
 
 import bandlight
 from conftest import SOURCE_DIR
-from test_stubs import STUB, stub_definitions, stub_tree
+from test_stubs import STUB, split_params, stub_definitions, stub_tree
 
 # The table's entries each keyword may take, by keyword name.
 KEYWORD_ENTRIES = {
@@ -78,23 +78,6 @@ def literal(text):
     except (ValueError, SyntaxError):
         return None
     return v if isinstance(v, (str, int, float)) and not isinstance(v, bool) else None
-
-
-def split_params(text):
-    params, depth, cur = [], 0, ""
-    for ch in text:
-        if ch in "([{":
-            depth += 1
-        elif ch in ")]}":
-            depth -= 1
-        if ch == "," and depth == 0:
-            params.append(cur.strip())
-            cur = ""
-        else:
-            cur += ch
-    if cur.strip():
-        params.append(cur.strip())
-    return params
 
 
 def runtime_defaults(obj):

@@ -42,6 +42,24 @@ def stub_definitions(body):
     return out
 
 
+def split_params(text):
+    """The parameters of a signature's text, split at its top-level commas."""
+    params, depth, cur = [], 0, ""
+    for ch in text:
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        if ch == "," and depth == 0:
+            params.append(cur.strip())
+            cur = ""
+        else:
+            cur += ch
+    if cur.strip():
+        params.append(cur.strip())
+    return params
+
+
 def pybind_signatures(obj):
     """(parameter names, keyword-only names) of each overload, from the
     signatures pybind11 writes at the head of __doc__."""
@@ -51,19 +69,7 @@ def pybind_signatures(obj):
         m = re.match(rf"^(?:\d+\. )?{re.escape(name)}\((.*)\) -> ", line.strip())
         if not m:
             continue
-        params, depth, cur = [], 0, ""
-        for ch in m.group(1):
-            if ch in "([{":
-                depth += 1
-            elif ch in ")]}":
-                depth -= 1
-            if ch == "," and depth == 0:
-                params.append(cur.strip())
-                cur = ""
-            else:
-                cur += ch
-        if cur.strip():
-            params.append(cur.strip())
+        params = split_params(m.group(1))
         names, kwonly, star = [], set(), False
         for p in params:
             if p == "*":

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "spectral/Colorimetry.h"
+#include "bandlight/spectral/Colorimetry.h"
 
 namespace bandlight::test
 {

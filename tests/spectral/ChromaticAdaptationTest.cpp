@@ -3,8 +3,8 @@
 
 #include <Eigen/LU>
 
-#include "spectral/ChromaticAdaptation.h"
-#include "spectral/Exception.h"
+#include "bandlight/spectral/ChromaticAdaptation.h"
+#include "bandlight/spectral/Exception.h"
 
 using namespace bandlight;
 

@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "spectral/Colorimetry.h"
-#include "spectral/Illuminants.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/Illuminants.h"
 
 using namespace bandlight;
 

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "spectral/Parallel.h"
+#include "bandlight/spectral/Parallel.h"
 
 using namespace bandlight;
 

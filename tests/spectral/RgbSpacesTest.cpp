@@ -5,8 +5,8 @@
 
 #include <Eigen/LU>
 
-#include "spectral/Exception.h"
-#include "spectral/RgbSpaces.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/RgbSpaces.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "transforms/IlluminantChange.h"
+#include "bandlight/transforms/IlluminantChange.h"
 
 namespace bandlight::test
 {

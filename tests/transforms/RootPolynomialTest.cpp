@@ -4,9 +4,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "spectral/Illuminants.h"
-#include "transforms/IlluminantChange.h"
-#include "transforms/RootPolynomial.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/IlluminantChange.h"
+#include "bandlight/transforms/RootPolynomial.h"
 
 using namespace bandlight;
 
