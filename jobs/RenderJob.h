@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "jobs/Defaults.h"
 #include "jobs/DeltaEMap.h"
 #include "jobs/Reporter.h"
 #include "render/Scene.h"
@@ -30,7 +31,7 @@ struct RenderRequest
     /// messages and anchoring its relative file names); one of the two.
     std::string scene;
     std::optional<std::string> text;
-    std::string source = "<scene>";
+    std::string source = defaults::SCENE_SOURCE;
     /// Overrides the scene's mode: "band3", "bandN" or "spectral".
     std::optional<std::string> mode;
     /// The EXR to write (linear RGB in the scene's output space, or band
@@ -50,7 +51,7 @@ struct RenderRequest
     bool explain = false;
     /// Evaluate every term per pixel and sample (the planner's reference).
     bool unplanned = false;
-    int threads = 0;  ///< 0: all cores
+    int threads = defaults::THREADS;  ///< 0: all cores
 };
 
 /// The EXR a render writes when no output is named: the scene file's stem
