@@ -109,11 +109,13 @@ struct RenderResult
 void CheckRenderOutputs(const PreparedRender& prepared);
 
 /// Renders a prepared request and writes its outputs as one set. First,
-/// before anything is rendered, CheckRenderOutputs. Then renders and
-/// writes the render, its preview and, with `compare`, the ΔE00 map against the
-/// spectral render (L*a*b* relative to the equal-energy white at the
-/// lights' summed intensity; the background is left out). Either every
-/// file is replaced or none is.
+/// before anything is rendered, CheckRenderOutputs, and every file to be
+/// written is checked (OutputPlan: its folder exists and can be written,
+/// it is not the scene file). Then renders and writes the render, its
+/// preview and, with `compare`, the ΔE00 map against the spectral render
+/// (L*a*b* relative to the equal-energy white at the lights' summed
+/// intensity; the background is left out). Either every file is replaced
+/// or none is.
 RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter = SilentReporter());
 
 /// PrepareRender, then MakeRender.
