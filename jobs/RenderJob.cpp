@@ -7,6 +7,7 @@
 
 #include "bandlight/jobs/ImageApply.h"
 #include "bandlight/jobs/Inputs.h"
+#include "bandlight/jobs/OutputPaths.h"
 #include "bandlight/jobs/SpectralJob.h"
 #include "bandlight/plugin/ConfigBuilder.h"
 #include "bandlight/plugin/OcioTransforms.h"
@@ -32,6 +33,18 @@ std::string Stem(const std::string& path)
     return dot != std::string::npos && (slash == std::string::npos || dot > slash)
                ? path.substr(0, dot)
                : path;
+}
+
+/// The preview beside the render: its stem + ".png".
+std::string PreviewPath(const std::string& out)
+{
+    return Stem(out) + ".png";
+}
+
+/// The comparison's map beside the render: its stem + "_dE00" + `extension`.
+std::string MapPath(const std::string& out, const std::string& extension)
+{
+    return Stem(out) + "_dE00" + extension;
 }
 
 bool BandOutput(const Scene& scene)
@@ -135,6 +148,28 @@ DeltaEMap CompareWithReference(const Scene& scene, const RenderedImage& img,
         map.set(i, DeltaE2000(XyzToLab(xa, white), XyzToLab(xb, white)));
     }
     return map;
+}
+
+/// Every file of the set, before the work: a folder that is not there
+/// fails now, not after the render, and the scene is never overwritten.
+void CheckFiles(const RenderRequest& r, const Scene& scene)
+{
+    OutputPlan plan;
+    if (!r.text)
+    {
+        plan.input(r.scene);
+    }
+    plan.file("{out}", r.out);
+    if (r.preview && !BandOutput(scene))
+    {
+        plan.file(r.previewPath.empty() ? "{out}" : "{preview}",
+                  r.previewPath.empty() ? PreviewPath(r.out) : r.previewPath);
+    }
+    if (r.compare)
+    {
+        plan.file("{out}", MapPath(r.out, ".exr")).file("{out}", MapPath(r.out, ".png"));
+    }
+    plan.check();
 }
 
 /// "band3", "band6" or "spectral": the mode as --mode names it.
@@ -263,6 +298,10 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
         return result;
     }
     CheckRenderOutputs(prepared);
+    if (!r.out.empty())
+    {
+        CheckFiles(r, scene);
+    }
     const auto t0 = std::chrono::steady_clock::now();
     result.image = r.unplanned ? RenderSceneUnplanned(scene, r.threads, &result.counters)
                                : RenderScene(scene, prepared.plan, r.threads, &result.counters);
@@ -291,7 +330,7 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
         result.files.push_back(WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
         if (r.preview)
         {
-            const std::string png = r.previewPath.empty() ? Stem(r.out) + ".png" : r.previewPath;
+            const std::string png = r.previewPath.empty() ? PreviewPath(r.out) : r.previewPath;
             const std::vector<float> preview = SrgbPreview(img, space);
             ImageDescription srgb;
             srgb.colorSpace = "sRGB";
@@ -308,8 +347,8 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
         const DeltaEMap map = CompareWithReference(scene, img, ref);
         RenderComparison c;
         c.summary = map.summary();
-        c.exr = Stem(r.out) + "_dE00.exr";
-        c.png = Stem(r.out) + "_dE00.png";
+        c.exr = MapPath(r.out, ".exr");
+        c.png = MapPath(r.out, ".png");
         std::ostringstream title;
         title << "CIEDE2000 of the " << ModeName(scene.settings)
               << " render against the spectral reference: mean " << Fixed(c.summary.mean, 2)

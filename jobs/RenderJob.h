@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bandlight/jobs/Defaults.h"
 #include "bandlight/jobs/DeltaEMap.h"
 #include "bandlight/jobs/Reporter.h"
 #include "bandlight/render/Scene.h"
@@ -30,7 +31,7 @@ struct RenderRequest
     /// messages and anchoring its relative file names); one of the two.
     std::string scene;
     std::optional<std::string> text;
-    std::string source = "<scene>";
+    std::string source = defaults::SCENE_SOURCE;
     /// Overrides the scene's mode: "band3", "bandN" or "spectral".
     std::optional<std::string> mode;
     /// The EXR to write (linear RGB in the scene's output space, or band
@@ -50,7 +51,7 @@ struct RenderRequest
     bool explain = false;
     /// Evaluate every term per pixel and sample (the planner's reference).
     bool unplanned = false;
-    int threads = 0;  ///< 0: all cores
+    int threads = defaults::THREADS;  ///< 0: all cores
 };
 
 /// The EXR a render writes when no output is named: the scene file's stem
@@ -108,11 +109,13 @@ struct RenderResult
 void CheckRenderOutputs(const PreparedRender& prepared);
 
 /// Renders a prepared request and writes its outputs as one set. First,
-/// before anything is rendered, CheckRenderOutputs. Then renders and
-/// writes the render, its preview and, with `compare`, the ΔE00 map against the
-/// spectral render (L*a*b* relative to the equal-energy white at the
-/// lights' summed intensity; the background is left out). Either every
-/// file is replaced or none is.
+/// before anything is rendered, CheckRenderOutputs, and every file to be
+/// written is checked (OutputPlan: its folder exists and can be written,
+/// it is not the scene file). Then renders and writes the render, its
+/// preview and, with `compare`, the ΔE00 map against the spectral render
+/// (L*a*b* relative to the equal-energy white at the lights' summed
+/// intensity; the background is left out). Either every file is replaced
+/// or none is.
 RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter = SilentReporter());
 
 /// PrepareRender, then MakeRender.

@@ -3,6 +3,7 @@
 // files `bandlight render` writes (the render job, jobs/RenderJob.h), and
 // the planner's account of it.
 #include "PyBandlight.h"
+#include "bandlight/jobs/Defaults.h"
 #include "bandlight/jobs/RenderJob.h"
 
 namespace bandlight::python
@@ -120,8 +121,8 @@ py::object Render(const std::optional<Path>& scene, const std::optional<std::str
 void AddRender(py::module_& m)
 {
     m.def("render", &Render, py::arg("scene") = py::none(), py::kw_only(),
-          py::arg("text") = py::none(), py::arg("source") = jobs::RenderRequest{}.source,
-          py::arg("mode") = py::none(), py::arg("threads") = jobs::RenderRequest{}.threads,
+          py::arg("text") = py::none(), py::arg("source") = defaults::SCENE_SOURCE,
+          py::arg("mode") = py::none(), py::arg("threads") = defaults::THREADS,
           py::arg("unplanned") = false, py::arg("out") = py::none(), py::arg("spectra") = false,
           py::arg("compare") = false, py::arg("preview") = jobs::RenderRequest{}.preview, R"doc(
 Renders a YAML scene (docs/scenes.md) as ``bandlight render`` does.
@@ -161,7 +162,7 @@ when a file cannot be read or written.
             return Prepare(r).explanation;
         },
         py::arg("scene") = py::none(), py::kw_only(), py::arg("text") = py::none(),
-        py::arg("source") = jobs::RenderRequest{}.source, py::arg("mode") = py::none(),
+        py::arg("source") = defaults::SCENE_SOURCE, py::arg("mode") = py::none(),
         py::arg("unplanned") = false,
         "What the planner evaluates for a scene, and why (``bandlight render --explain``).");
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The render job in process: its comparison against the spectral render,
 // its outputs as one set, its checks before the work, and the command's bytes.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -191,20 +192,42 @@ TEST_CASE("a render's outputs are one set: a failing output leaves every file as
 {
     const std::string dir = Fresh("set");
     const std::string out = dir + "/shot.exr";
+    const std::string preview = dir + "/shot.png";
+    const auto listing = [&]
+    {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir))
+        {
+            names.push_back(entry.path().filename().string());
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    };
     std::ofstream(out) << "the previous render";
+    std::ofstream(preview) << "the previous preview";
     jobs::RenderRequest request = TextRequest(out);
     request.compare = true;
-    // The second output of the set (the preview) goes into a folder that
-    // does not exist.
-    request.previewPath = dir + "/missing/shot.png";
-    CHECK_THROWS_AS(jobs::MakeRender(request), Exception);
-    CHECK(ReadAll(out) == "the previous render");
-    std::vector<std::string> left;
-    for (const auto& entry : fs::directory_iterator(dir))
+
+    SECTION("an output whose folder is missing is refused before the render")
     {
-        left.push_back(entry.path().filename().string());
+        request.previewPath = dir + "/missing/shot.png";
+        CHECK_THROWS_WITH(jobs::MakeRender(request),
+                          Catch::Contains("/missing") && Catch::Contains("cannot write there"));
     }
-    CHECK(left == std::vector<std::string>{"shot.exr"});  // no map, no temporary file
+    SECTION("the last output failing while it is written leaves the others unwritten")
+    {
+        // The map's PNG is drawn by gnuplot, after the render, its preview
+        // and the map's EXR were written to their temporary files: without
+        // gnuplot on the PATH the fourth output fails.
+        const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+        ::setenv("PATH", (dir + "/no-programs-here").c_str(), 1);
+        CHECK_THROWS_WITH(jobs::MakeRender(request), Catch::Contains("gnuplot is not installed"));
+        ::setenv("PATH", path.c_str(), 1);
+    }
+    CHECK(ReadAll(out) == "the previous render");
+    CHECK(ReadAll(preview) == "the previous preview");
+    // No map, no temporary file.
+    CHECK(listing() == std::vector<std::string>{"shot.exr", "shot.png"});
 }
 
 TEST_CASE("outputs that do not go together are refused before rendering", "[jobs][render]")
