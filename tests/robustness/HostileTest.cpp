@@ -435,7 +435,7 @@ TEST_CASE("Illuminants without a white are refused and results are finite or an 
     }
     // Power only beyond the visible range.
     const std::string ir = dir + "/ir.csv";
-    WriteText(ir, "nm,ir\n800,1\n805,1\n810,1\n815,1\n");
+    WriteText(ir, "nm,ir\n800,1\n805,1\n810,1\n815,1\n820,1\n");
     Result r = Bandlight("cri --illuminant " + ShellWord(ir));
     CheckOneLineError(r);
     CHECK(r.err == "bandlight: " + ir +
@@ -444,7 +444,7 @@ TEST_CASE("Illuminants without a white are refused and results are finite or an 
 
     // Power only above 650 nm: a white with no Z, nothing L*a*b* can relate to.
     const std::string red = dir + "/red.csv";
-    WriteText(red, "nm,red\n680,0\n780,1\n");
+    WriteText(red, "nm,red\n680,0\n705,0.25\n730,0.5\n755,0.75\n780,1\n");
     r = Bandlight("xyz --reflectance TCS --illuminant " + ShellWord(red));
     CheckOneLineError(r);
     CHECK(r.err == "bandlight: " + red +
@@ -496,7 +496,7 @@ TEST_CASE("A failed run prints one line: notes and library messages are held bac
     const std::string dir = Folder("oneline");
     // An illuminant that gets a coverage note, then a reflectance that fails.
     const std::string light = dir + "/short.csv";
-    WriteText(light, "nm,l\n400,1\n500,1\n600,1\n700,1\n");
+    WriteText(light, "nm,l\n400,1\n475,1\n550,1\n625,1\n700,1\n");
     Result r = Bandlight("xyz --illuminant " + ShellWord(light) + " --reflectance " +
                          ShellWord(dir + "/missing.csv"));
     CheckOneLineError(r);
