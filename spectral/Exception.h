@@ -15,6 +15,41 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// An Exception about a file that could not be opened, read, created,
+/// renamed or written: it carries the path and the errno that says why (0
+/// when the system gave none). Content that was read and refused (a
+/// malformed spectrum, a config OpenColorIO cannot parse) is an Exception,
+/// never a FileError. Python raises it as the OSError subclass of its errno
+/// (FileNotFoundError, PermissionError, ...).
+class FileError : public Exception
+{
+public:
+    /// The message is "PATH: what", the path as PathInMessage() writes it.
+    FileError(const std::string& path, int error, const std::string& what);
+
+    /// A FileError with a message already made (passed on from elsewhere,
+    /// as the image module reports its errors).
+    static FileError WithMessage(const std::string& path, int error, const std::string& message);
+
+    /// The file, as given (may be empty).
+    const std::string& path() const noexcept { return m_path; }
+    /// errno: ENOENT, EACCES, EISDIR, ...; 0 when the system gave none.
+    int error() const noexcept { return m_error; }
+
+private:
+    struct Whole
+    {
+    };
+    FileError(Whole, const std::string& message, const std::string& path, int error);
+
+    std::string m_path;
+    int m_error;
+};
+
+/// A path as messages name it: the path itself, or "'' (an empty path)",
+/// so that an empty name does not leave a message starting with ": ".
+std::string PathInMessage(const std::string& path);
+
 /// How a face of bandlight spells a parameter in messages: the C++ API by
 /// its name (`camera`), the command as a flag (`--camera`), Python as a
 /// keyword (`camera=`).

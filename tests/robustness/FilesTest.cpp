@@ -104,5 +104,5 @@ TEST_CASE("Paths that are not text files are refused before reading", "[robustne
     const std::string dir = kDir.substr(0, kDir.size() - 1);
     r = Bandlight("render '" + dir + "' -o '" + TempFile("dir.exr") + "'");
     CHECK(r.code == 2);
-    CHECK(r.err == "bandlight: " + dir + ": not a regular file (a scene file is a text file)\n");
+    CHECK(r.err == "bandlight: " + dir + ": is a directory, not a scene file\n");
 }
