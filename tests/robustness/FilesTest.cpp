@@ -106,3 +106,29 @@ TEST_CASE("Paths that are not text files are refused before reading", "[robustne
     CHECK(r.code == 2);
     CHECK(r.err == "bandlight: " + dir + ": is a directory, not a scene file\n");
 }
+
+TEST_CASE("An empty file name is named as such, not left as ': cannot ...'",
+          "[robustness][files][cli]")
+{
+    Result r = Bandlight("lut --from A --to D65 -o ''");
+    CHECK(r.code == 2);
+    CHECK(r.err ==
+          "bandlight: '' (an empty path): cannot create output file (No such file or directory)\n");
+    r = Bandlight("apply '' '" + TempFile("empty_name.exr") + "' --from A --to D65");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '' (an empty path): cannot read image"));
+    r = Bandlight("spectral '' '" + TempFile("empty_name.exr") + "'");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '' (an empty path): cannot read image"));
+    r = Bandlight("package --out ''");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err,
+               Catch::StartsWith("bandlight: '' (an empty path): cannot create the directory"));
+    // A missing file keeps the message it has always had.
+    r = Bandlight("config --base '/nonexistent/config.ocio' --out '" + TempFile("empty_name") +
+                  "'");
+    CHECK(r.code == 2);
+    CHECK(r.err ==
+          "bandlight: /nonexistent/config.ocio: cannot read the config: Error could not "
+          "read '/nonexistent/config.ocio' OCIO profile.\n");
+}
