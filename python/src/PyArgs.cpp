@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Arguments as the command reads them, and numpy arrays in and out.
-#include <sys/stat.h>
-
 #include <sstream>
 
 #include "PyBandlight.h"
@@ -13,14 +11,6 @@ namespace bandlight::python
 
 namespace
 {
-bool Exists(const std::string& path)
-{
-    struct stat st
-    {
-    };
-    return ::stat(path.c_str(), &st) == 0;
-}
-
 std::string TypeName(const py::handle& arg)
 {
     return py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>();
@@ -60,17 +50,13 @@ Light ToLight(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        const std::string text = arg.cast<std::string>();
-        return !IsBuiltinIlluminant(text) && Exists(text)
-                   ? ReadingFile(text, [&] { return jobs::ResolveIlluminant(text, Warnings()); })
-                   : jobs::ResolveIlluminant(text, Warnings());
+        return jobs::ResolveIlluminant(arg.cast<std::string>(), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, even one named like a built-in.
         const std::string path = FsPath(arg);
-        const NamedSpectrum s = ReadingFile(path, [&] { return ReadSpectraFile(path).front(); });
-        return jobs::CheckedIlluminant(s, path, Warnings());
+        return jobs::CheckedIlluminant(ReadSpectraFile(path).front(), path, Warnings());
     }
     throw py::type_error(
         "an illuminant is a name or file (str), a file (os.PathLike) or a "
@@ -118,18 +104,14 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        const std::string text = arg.cast<std::string>();
-        return Exists(text)
-                   ? ReadingFile(text, [&] { return jobs::ResolveReflectances(text, Warnings()); })
-                   : jobs::ResolveReflectances(text, Warnings());
+        return jobs::ResolveReflectances(arg.cast<std::string>(), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, read and checked as ResolveReflectances
         // reads one.
         const std::string path = FsPath(arg);
-        std::vector<NamedSpectrum> spectra =
-            ReadingFile(path, [&] { return ReadSpectraFile(path); });
+        std::vector<NamedSpectrum> spectra = ReadSpectraFile(path);
         for (const NamedSpectrum& s : spectra)
         {
             jobs::CheckRemittance(s, path, Warnings());
@@ -201,7 +183,7 @@ std::shared_ptr<const SpectralCamera> PlatesArgs::loadCamera() const
     {
         return nullptr;
     }
-    return ReadingFile(o.camera, [&] { return o.loadCamera(); });
+    return o.loadCamera();
 }
 
 MethodSpec ToMethod(const std::string& name, const py::handle& training, const PlatesArgs& plates)
