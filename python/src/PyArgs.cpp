@@ -21,11 +21,6 @@ bool IsPathLike(const py::handle& arg)
     return !py::isinstance<py::str>(arg) && py::hasattr(arg, "__fspath__");
 }
 
-std::string FsPath(const py::handle& arg)
-{
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-}
-
 std::string ShapeText(const py::array& a)
 {
     std::ostringstream s;
@@ -50,12 +45,13 @@ Light ToLight(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        return jobs::ResolveIlluminant(arg.cast<std::string>(), Warnings());
+        // A name or a file: as a file name, it must hold no NUL byte.
+        return jobs::ResolveIlluminant(PathText(arg, "an illuminant"), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, even one named like a built-in.
-        const std::string path = FsPath(arg);
+        const std::string path = PathText(arg, "an illuminant");
         return jobs::CheckedIlluminant(ReadSpectraFile(path).front(), path, Warnings());
     }
     throw py::type_error(
@@ -104,13 +100,14 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        return jobs::ResolveReflectances(arg.cast<std::string>(), Warnings());
+        // A name or a file: as a file name, it must hold no NUL byte.
+        return jobs::ResolveReflectances(PathText(arg, "remittances"), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, read and checked as ResolveReflectances
         // reads one.
-        const std::string path = FsPath(arg);
+        const std::string path = PathText(arg, "remittances");
         std::vector<NamedSpectrum> spectra = ReadSpectraFile(path);
         for (const NamedSpectrum& s : spectra)
         {
@@ -171,7 +168,7 @@ jobs::PlatesRequest PlatesArgs::options() const
             throw py::type_error("camera is a file (str or os.PathLike) or None, not " +
                                  TypeName(camera));
         }
-        o.camera = FsPath(camera);
+        o.camera = PathText(camera, "camera");
     }
     return o;
 }
@@ -357,15 +354,21 @@ py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& 
     return std::move(a);
 }
 
-std::string PathText(const py::object& arg, const std::string& what)
+std::string PathText(const py::handle& arg, const std::string& what)
 {
     if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
     {
-        throw py::type_error(
-            what + " is a file (str or os.PathLike), not " +
-            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+        throw py::type_error(what + " is a file (str or os.PathLike), not " + TypeName(arg));
     }
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+    const std::string path =
+        py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+    if (path.find('\0') != std::string::npos)
+    {
+        // The system would read the name only up to it: another file.
+        throw Exception(what + " '" + OneLine(path, 200) +
+                        "' holds a NUL byte, which no file name can");
+    }
+    return path;
 }
 
 py::dict FrameRunDict(size_t frames, size_t skipped, const std::vector<jobs::FrameFailure>& failed,

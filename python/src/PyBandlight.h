@@ -4,10 +4,9 @@
 // The Python module's shared pieces: one Add<Area>() per Py<Area>.cpp (as
 // PyOpenColorIO's bindings are organised), converters from Python values to
 // the jobs' requests (jobs/: the same library the command calls), numpy
-// helpers, the reporter that makes Python warnings of the jobs' notes, and
-// the exceptions' translation.
+// helpers, the reporter that makes Python warnings of the jobs' notes, the
+// exceptions' translation, and the file-path argument type.
 
-#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -16,7 +15,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/Inputs.h"
@@ -32,7 +30,15 @@
 namespace bandlight::python
 {
 namespace py = pybind11;
-using Path = std::filesystem::path;
+
+/// A file argument: a str or an os.PathLike, as PathText() reads it (so a
+/// NUL byte in it is a ValueError). Functions take it as `const Path&` or
+/// `std::optional<Path>` (None).
+struct Path
+{
+    std::string text;
+    const std::string& string() const noexcept { return text; }
+};
 
 // ---------------------------------------------------------------------------
 // One registration per area (PyOpenColorIO's layout: one Py<Area>.cpp each).
@@ -135,8 +141,10 @@ BandSet ToBands(const py::handle& arg);
 MatchingSet ToMatchingSet(const std::string& text);
 
 /// A file argument (str or os.PathLike) as text; TypeError naming `what`
-/// otherwise.
-std::string PathText(const py::object& arg, const std::string& what);
+/// otherwise. A NUL byte is an Exception (ValueError): the system would
+/// read the name only up to it and use another file. Every file name Python
+/// hands the library passes here.
+std::string PathText(const py::handle& arg, const std::string& what);
 
 /// A frame set's summary: {"frames", "skipped", "failed": [(frame, error)],
 /// "seconds"}.
@@ -197,3 +205,28 @@ py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& 
 
 }  // namespace bandlight::python
 
+namespace pybind11::detail
+{
+/// bandlight::python::Path from a str or an os.PathLike (named os.PathLike
+/// in signatures, as pybind11 names std::filesystem::path).
+template <>
+struct type_caster<bandlight::python::Path>
+{
+    PYBIND11_TYPE_CASTER(bandlight::python::Path, const_name("os.PathLike"));
+
+    bool load(handle src, bool)
+    {
+        if (!isinstance<str>(src) && !hasattr(src, "__fspath__"))
+        {
+            return false;
+        }
+        value.text = bandlight::python::PathText(src, "a path");
+        return true;
+    }
+
+    static handle cast(const bandlight::python::Path& path, return_value_policy, handle)
+    {
+        return str(path.text).release();
+    }
+};
+}  // namespace pybind11::detail

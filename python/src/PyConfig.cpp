@@ -33,9 +33,7 @@ OCIO::ConstConfigRcPtr ToConfig(const py::object& arg)
 {
     if (py::isinstance<py::str>(arg) || py::hasattr(arg, "__fspath__"))
     {
-        const std::string path =
-            py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-        return jobs::ReadConfigFile(path);
+        return jobs::ReadConfigFile(PathText(arg, "base"));
     }
     return CastTo<OCIO::ConstConfigRcPtr>(arg, "a config",
                                           "a file (str, os.PathLike) or a PyOpenColorIO.Config");

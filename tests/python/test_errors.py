@@ -118,6 +118,20 @@ def write_plate(path):
     out.close()
 
 
+def write_spectral_image(path):
+    """A 2 x 2 emissive spectral EXR (Fichet 2021 channel names, 5 nm)."""
+    import OpenImageIO as oiio
+    grid = range(380, 781, 5)
+    spec = oiio.ImageSpec(2, 2, len(grid), "float")
+    spec.channelnames = tuple(f"S0.{nm},000000nm" for nm in grid)
+    spec.attribute("spectralLayoutVersion", "1.0")
+    spec.attribute("emissiveUnits", "W.m^-2.sr^-1")
+    out = oiio.ImageOutput.create(str(path))
+    assert out.open(str(path), spec)
+    assert out.write_image(np.full((2, 2, len(grid)), 0.5, dtype=np.float32))
+    out.close()
+
+
 def unwritable_folder(tmp_path):
     """A folder where creating a file fails with EACCES, or None: one without
     write permission, or for root (whom permissions do not stop) sysfs,
@@ -227,6 +241,30 @@ def test_malformed_images_and_configs_are_value_errors(tmp_path):
         bandlight.config(base=tmp_path / "bad.ocio")
     assert not isinstance(e.value, OSError)
     assert str(e.value).startswith(f"{tmp_path / 'bad.ocio'}:")
+
+
+def test_a_nul_byte_in_a_path_is_a_value_error_and_writes_nothing(tmp_path):
+    write_spectral_image(tmp_path / "shot.exr")
+    write_plate(tmp_path / "plate.exr")
+    before = sorted(tmp_path.iterdir())
+    # The system would read the name only up to the NUL: "nul.exr".
+    with pytest.raises(ValueError) as e:
+        bandlight.spectral(tmp_path / "shot.exr", f"{tmp_path}/nul.exr\0.png")
+    assert not isinstance(e.value, OSError)
+    assert "NUL byte" in str(e.value)
+    with pytest.raises(ValueError):
+        bandlight.apply(tmp_path / "plate.exr", f"{tmp_path}/nul.exr\0.png", src="A", dst="D65")
+    with pytest.raises(ValueError):
+        bandlight.apply(f"{tmp_path}/plate.exr\0.png", tmp_path / "o.exr", src="A", dst="D65")
+    with pytest.raises(ValueError):
+        bandlight.lut(f"{tmp_path}/nul.clf\0.cube", "A", "D65")
+    (tmp_path / "lamp.csv").write_text("nm,lamp\n380,1\n780,1\n")
+    for call in (lambda: bandlight.read_spectra(f"{tmp_path}/lamp.csv\0x"),
+                 lambda: bandlight.illuminant(f"{tmp_path}/lamp.csv\0x"),
+                 lambda: bandlight.reflectances(f"{tmp_path}/lamp.csv\0x")):
+        with pytest.raises(ValueError):
+            call()
+    assert sorted(tmp_path.iterdir()) == sorted(before + [tmp_path / "lamp.csv"])
 
 
 def test_notes_are_warnings_and_can_be_errors():
