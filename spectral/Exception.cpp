@@ -26,6 +26,19 @@ FileError FileError::WithMessage(const std::string& path, int error, const std::
     return FileError(Whole{}, message, path, error);
 }
 
+FileError FileError::ForParameter(const std::string& path, int error,
+                                  const std::string& messageTemplate)
+{
+    FileError e(Whole{}, SpellParameters(messageTemplate, Face::CPP), path, error);
+    e.m_template = messageTemplate;
+    return e;
+}
+
+std::string FileError::spelled(Face face) const
+{
+    return m_template.empty() ? std::string(what()) : SpellParameters(m_template, face);
+}
+
 std::string SourcePosition(const std::string& source, size_t line)
 {
     return line ? source + ":" + std::to_string(line) : source;

@@ -213,7 +213,7 @@ void AddErrors(py::module_& m)
             }
             catch (const FileError& e)
             {
-                RaiseFileError(e.error(), Message(e.what()), &e.path());
+                RaiseFileError(e.error(), Message(e.spelled(Face::PYTHON).c_str()), &e.path());
             }
             catch (const ParameterError& e)
             {

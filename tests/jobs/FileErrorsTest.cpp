@@ -122,8 +122,14 @@ TEST_CASE("an image that is not there is a FileError ENOENT, for every job that 
     CHECK(e.error() == ENOENT);
     CHECK_THAT(e.what(), Catch::StartsWith("'' (an empty path): cannot read image"));
 
+    // A folder given as the input image: refused before any work, or by the
+    // image module when it is asked to read one.
     fs::create_directories(dir + "/plate.exr");
     e = CaughtFileError([&] { jobs::ApplyImages(Relight(dir + "/plate.exr", dir + "/o.exr")); });
+    CHECK(e.error() == EISDIR);
+    CHECK(e.path() == dir + "/plate.exr");
+    CHECK_THAT(e.what(), Catch::Contains("is a folder, not an image file"));
+    e = CaughtFileError([&] { jobs::ReadSpectralImage(dir + "/plate.exr"); });
     CHECK(e.error() == EISDIR);
     CHECK(std::string(e.what()) == dir + "/plate.exr: is a directory, not an image file");
 }
@@ -135,19 +141,34 @@ TEST_CASE("an image written into a folder that is not there is a FileError ENOEN
     const std::string dir = FreshDir("nofolder");
     WritePlate(dir + "/plate.exr");
     const std::string out = dir + "/none/o.exr";
+    // Refused before any work, by the run's output plan.
     FileError e = CaughtFileError([&] { jobs::ApplyImages(Relight(dir + "/plate.exr", out)); });
     CHECK(e.error() == ENOENT);
     CHECK(e.path() == out);
-    CHECK_THAT(e.what(), Catch::StartsWith(out + ": cannot create output file"));
+    CHECK(std::string(e.what()) ==
+          out + ": cannot write there: the folder '" + dir + "/none' does not exist");
 
+    // Written without a plan: the output file itself cannot be created.
     e = CaughtFileError([&] { WritePlate(out); });
     CHECK(e.error() == ENOENT);
     CHECK(e.path() == out);
+    CHECK_THAT(e.what(), Catch::StartsWith(out + ": cannot create output file"));
 
     // Under a file: ENOTDIR, whoever runs the test.
     std::ofstream(dir + "/plain") << "x";
     e = CaughtFileError([&] { WritePlate(dir + "/plain/o.exr"); });
     CHECK(e.error() == ENOTDIR);
+    e = CaughtFileError([&]
+                        { jobs::ApplyImages(Relight(dir + "/plate.exr", dir + "/plain/o.exr")); });
+    CHECK(e.error() == ENOTDIR);
+    // Over a folder: EISDIR, the message naming the parameter per face.
+    fs::create_directories(dir + "/folder.exr");
+    e = CaughtFileError([&]
+                        { jobs::ApplyImages(Relight(dir + "/plate.exr", dir + "/folder.exr")); });
+    CHECK(e.error() == EISDIR);
+    CHECK(e.path() == dir + "/folder.exr");
+    CHECK(e.spelled(Face::COMMAND) == "--output '" + dir + "/folder.exr' is a folder, not a file");
+    CHECK(e.spelled(Face::PYTHON) == "output '" + dir + "/folder.exr' is a folder, not a file");
 
     OutputSet set;
     e = CaughtFileError(

@@ -107,14 +107,10 @@ TEST_CASE("Paths that are not text files are refused before reading", "[robustne
     CHECK(r.err == "bandlight: " + dir + ": is a directory, not a scene file\n");
 }
 
-TEST_CASE("An empty file name is named as such, not left as ': cannot ...'",
+TEST_CASE("An empty file name is named as such, not left as ': cannot ...'; directories as such",
           "[robustness][files][cli]")
 {
-    Result r = Bandlight("lut --from A --to D65 -o ''");
-    CHECK(r.code == 2);
-    CHECK(r.err ==
-          "bandlight: '' (an empty path): cannot create output file (No such file or directory)\n");
-    r = Bandlight("apply '' '" + TempFile("empty_name.exr") + "' --from A --to D65");
+    Result r = Bandlight("apply '' '" + TempFile("empty_name.exr") + "' --from A --to D65");
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::StartsWith("bandlight: '' (an empty path): cannot read image"));
     r = Bandlight("spectral '' '" + TempFile("empty_name.exr") + "'");
@@ -124,6 +120,13 @@ TEST_CASE("An empty file name is named as such, not left as ': cannot ...'",
     CHECK(r.code == 2);
     CHECK_THAT(r.err,
                Catch::StartsWith("bandlight: '' (an empty path): cannot create the directory"));
+    // Directories where a file belongs.
+    r = Bandlight("lut --from A --to D65 -o /tmp");
+    CHECK(r.code == 2);
+    CHECK(r.err == "bandlight: --out '/tmp' is a folder, not a file\n");
+    r = Bandlight("apply /tmp '" + TempFile("dir_in.exr") + "' --from A --to D65");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '/tmp' is a folder, not an image file"));
     // A missing file keeps the message it has always had.
     r = Bandlight("config --base '/nonexistent/config.ocio' --out '" + TempFile("empty_name") +
                   "'");

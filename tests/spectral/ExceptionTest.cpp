@@ -104,6 +104,14 @@ TEST_CASE("FileError names its path, an empty one as such, and keeps the errno",
     // A FileError is an Exception: the command's exit code 2 and one line.
     const Exception& base = passed;
     CHECK(std::string(base.what()) == "a.exr: cannot read image: x");
+    CHECK(passed.spelled(Face::COMMAND) == "a.exr: cannot read image: x");
+    // One that names a parameter spells it per face, as ParameterError does.
+    const FileError named = FileError::ForParameter("/tmp", EISDIR, "{out} '/tmp' is a folder");
+    CHECK(std::string(named.what()) == "out '/tmp' is a folder");
+    CHECK(named.spelled(Face::COMMAND) == "--out '/tmp' is a folder");
+    CHECK(named.spelled(Face::PYTHON) == "out '/tmp' is a folder");
+    CHECK(named.error() == EISDIR);
+    CHECK(named.path() == "/tmp");
 }
 
 TEST_CASE("Reading a file that is not there is a FileError ENOENT naming it", "[spectral][errors]")
