@@ -82,6 +82,11 @@ int main(int argc, char** argv)
         // The library names its parameters; the command spells them as flags.
         return fail(2, "", e.spelled(bandlight::Face::COMMAND).c_str());
     }
+    catch (const bandlight::FileError& e)
+    {
+        // A file that cannot be used; its message may name a parameter too.
+        return fail(2, "", e.spelled(bandlight::Face::COMMAND).c_str());
+    }
     catch (const bandlight::Exception& e)
     {
         return fail(2, "", e.what());

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -162,14 +163,19 @@ void CheckImageInput(const std::string& path)
     {
         return;  // missing: the reader says so, frame by frame
     }
-    throw ParameterError(
-        ShowPath(path) + " is " +
-        (S_ISDIR(st.st_mode)    ? "a folder"
-         : S_ISFIFO(st.st_mode) ? "a FIFO"
-         : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-         : S_ISSOCK(st.st_mode)                       ? "a socket"
-                                                      : "not a regular file") +
-        ", not an image file: images are read from regular files");
+    if (S_ISDIR(st.st_mode))
+    {
+        // A directory where a file belongs: EISDIR, as opening it to read would say.
+        throw FileError::WithMessage(
+            path, EISDIR,
+            ShowPath(path) + " is a folder, not an image file: images are read from regular files");
+    }
+    throw ParameterError(ShowPath(path) + " is " +
+                         (S_ISFIFO(st.st_mode)                         ? "a FIFO"
+                          : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                          : S_ISSOCK(st.st_mode)                       ? "a socket"
+                                                                       : "not a regular file") +
+                         ", not an image file: images are read from regular files");
 }
 
 std::vector<int> ParseFrameRange(const std::string& text)

@@ -212,7 +212,7 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
             }
         }
     };
-    const std::string error = ImageFiles().transform(
+    const ImageFilesStatus status = ImageFiles().transform(
         in, out,
         [&](float* pixels, long width, long height, int channels, const int* rgb,
             const ImageData& header)
@@ -232,10 +232,7 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
     {
         std::rethrow_exception(thrown);
     }
-    if (!error.empty())
-    {
-        throw Exception(error);
-    }
+    ThrowIfFailed(status);
     return notes;
 }
 
@@ -313,12 +310,8 @@ void WriteImage(const std::string& path, const float* pixels, int width, int hei
         file.stream().close();  // the module writes by name
         description.writeAs = file.tempPath();
     }
-    const std::string error =
-        api.write(path, pixels, width, height, channels, channelNames, description, type);
-    if (!error.empty())
-    {
-        throw Exception(error);
-    }
+    ThrowIfFailed(
+        api.write(path, pixels, width, height, channels, channelNames, description, type));
 }
 
 ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name)
@@ -342,6 +335,18 @@ ImageDescription LinearImageDescription(const RgbSpace& space, const std::string
         }
     }
     return d;
+}
+
+void ThrowIfFailed(const ImageFilesStatus& status)
+{
+    if (status.fileError)
+    {
+        throw FileError::WithMessage(status.path, status.error, status.message);
+    }
+    if (!status.message.empty())
+    {
+        throw Exception(status.message);
+    }
 }
 
 const ImageFilesApi& ImageFiles()

@@ -54,25 +54,40 @@ struct ImageData
 using PixelProcess =
     std::function<void(float*, long, long, int, const int*, const ImageData& header)>;
 
-/// The module's entry points. Each returns "" on success or the error
-/// message (which names the file).
+/// What a call into the module reports. The module has its own copy of the
+/// library (its own exception types), so an error crosses as plain data and
+/// ThrowIfFailed() throws it again on this side: a file that could not be
+/// opened, read, created or written as FileError, anything else (a
+/// malformed or unsupported image) as Exception.
+struct ImageFilesStatus
+{
+    std::string message;     ///< empty on success; else the whole message, naming the file
+    bool fileError = false;  ///< the file could not be used (path, error below)
+    std::string path;        ///< the file, for a file error
+    int error = 0;           ///< its errno (0 when the system gave none)
+};
+
+/// Throws what `status` reports (nothing on success).
+void ThrowIfFailed(const ImageFilesStatus& status);
+
+/// The module's entry points.
 struct ImageFilesApi
 {
     int version;
-    std::string (*transform)(const std::string& in, const std::string& out,
-                             const PixelProcess& process, const std::string& note);
-    std::string (*write)(const std::string& path, const float* pixels, int width, int height,
-                         int channels, const std::vector<std::string>& channelNames,
-                         const ImageDescription& description, PixelType type);
+    ImageFilesStatus (*transform)(const std::string& in, const std::string& out,
+                                  const PixelProcess& process, const std::string& note);
+    ImageFilesStatus (*write)(const std::string& path, const float* pixels, int width, int height,
+                              int channels, const std::vector<std::string>& channelNames,
+                              const ImageDescription& description, PixelType type);
     /// Reads an image (with `pixels` false, only its header; the size is
     /// checked against memory before anything is allocated).
-    std::string (*read)(const std::string& path, ImageData& image, bool pixels);
+    ImageFilesStatus (*read)(const std::string& path, ImageData& image, bool pixels);
     /// Removes the module's temporary files in flight (async-signal-safe):
     /// the module carries its own copy of AtomicFile's registry.
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 5;
+constexpr int kImageFilesApiVersion = 6;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

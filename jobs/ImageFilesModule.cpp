@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "bandlight/jobs/ImageFiles.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/TextFile.h"
 
 namespace bandlight::jobs
 {
@@ -52,12 +54,15 @@ void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pi
     auto output = OIIO::ImageOutput::create(path);
     if (!output)
     {
-        throw Exception(path + ": no image writer for this file type: " + OIIO::geterror());
+        throw Exception(PathInMessage(path) +
+                        ": no image writer for this file type: " + OIIO::geterror());
     }
+    // The file itself was created above (or by the caller's OutputSet): what
+    // fails here is the format refusing the image, not the file system.
     if (!output->open(target, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
         !output->close())
     {
-        throw Exception(path + ": cannot write image: " + output->geterror());
+        throw Exception(PathInMessage(path) + ": cannot write image: " + output->geterror());
     }
     if (file)
     {
@@ -87,6 +92,51 @@ void CheckImageSize(const std::string& file, const OIIO::ImageSpec& spec)
     }
 }
 
+/// Opens an image for reading. A file that cannot be opened is a FileError
+/// with the errno that says why (OpenImageIO's message does not); a file
+/// that opens but is no image OpenImageIO reads is an Exception.
+std::unique_ptr<OIIO::ImageInput> OpenImage(const std::string& path)
+{
+    const int error = InputFileError(path);
+    if (error == EISDIR)
+    {
+        throw FileError(path, error, "is a directory, not an image file");
+    }
+    auto input = OIIO::ImageInput::open(path);
+    if (!input)
+    {
+        const std::string what = "cannot read image: " + OIIO::geterror();
+        if (error != 0)
+        {
+            throw FileError(path, error, what);
+        }
+        throw Exception(PathInMessage(path) + ": " + what);
+    }
+    return input;
+}
+
+/// Runs a module call: what it throws is reported as plain data
+/// (ImageFilesStatus), since this module's exception types are its own.
+template <typename Call>
+ImageFilesStatus Reported(Call&& call)
+{
+    try
+    {
+        call();
+        return {};
+    }
+    catch (const FileError& e)
+    {
+        return {e.what(), true, e.path(), e.error()};
+    }
+    catch (const std::exception& e)
+    {
+        ImageFilesStatus status;
+        status.message = e.what();
+        return status;
+    }
+}
+
 /// The header of an open image as ImageData (no pixels).
 ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
 {
@@ -109,120 +159,100 @@ ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
     return image;
 }
 
-std::string Transform(const std::string& in, const std::string& out, const PixelProcess& process,
-                      const std::string& note)
+ImageFilesStatus Transform(const std::string& in, const std::string& out,
+                           const PixelProcess& process, const std::string& note)
 {
-    try
-    {
-        auto input = OIIO::ImageInput::open(in);
-        if (!input)
+    return Reported(
+        [&]
         {
-            throw Exception(in + ": cannot read image: " + OIIO::geterror());
-        }
-        const OIIO::ImageSpec spec = input->spec();
-        if (spec.nchannels < 3)
-        {
-            throw Exception(in + ": has " + std::to_string(spec.nchannels) +
-                            " channels; a colour transform needs R, G and B");
-        }
-        CheckImageSize(in, spec);
-        std::vector<float> pixels(spec.image_pixels() * size_t(spec.nchannels));
-        if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        {
-            throw Exception(in + ": cannot read pixels: " + input->geterror());
-        }
-        input->close();
-        int rgb[3];
-        FindRgb(spec, rgb);
-        process(pixels.data(), spec.width, long(spec.height) * std::max(1, spec.depth),
-                spec.nchannels, rgb, Header(*input, spec));
-        OIIO::ImageSpec outSpec = spec;  // pixel type, channel names, metadata
-        if (!note.empty())
-        {
-            outSpec.attribute("bandlight:transform", note);
-        }
-        Write(out, outSpec, pixels.data());
-        return {};
-    }
-    catch (const std::exception& e)
-    {
-        return e.what();
-    }
+            auto input = OpenImage(in);
+            const OIIO::ImageSpec spec = input->spec();
+            if (spec.nchannels < 3)
+            {
+                throw Exception(in + ": has " + std::to_string(spec.nchannels) +
+                                " channels; a colour transform needs R, G and B");
+            }
+            CheckImageSize(in, spec);
+            std::vector<float> pixels(spec.image_pixels() * size_t(spec.nchannels));
+            if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+            {
+                throw Exception(in + ": cannot read pixels: " + input->geterror());
+            }
+            input->close();
+            int rgb[3];
+            FindRgb(spec, rgb);
+            process(pixels.data(), spec.width, long(spec.height) * std::max(1, spec.depth),
+                    spec.nchannels, rgb, Header(*input, spec));
+            OIIO::ImageSpec outSpec = spec;  // pixel type, channel names, metadata
+            if (!note.empty())
+            {
+                outSpec.attribute("bandlight:transform", note);
+            }
+            Write(out, outSpec, pixels.data());
+        });
 }
 
-std::string WriteImage(const std::string& path, const float* pixels, int width, int height,
-                       int channels, const std::vector<std::string>& channelNames,
-                       const ImageDescription& description, PixelType type)
+ImageFilesStatus WriteImage(const std::string& path, const float* pixels, int width, int height,
+                            int channels, const std::vector<std::string>& channelNames,
+                            const ImageDescription& description, PixelType type)
 {
-    try
-    {
-        const OIIO::TypeDesc t = type == PixelType::HALF    ? OIIO::TypeDesc::HALF
-                                 : type == PixelType::UINT8 ? OIIO::TypeDesc::UINT8
-                                                            : OIIO::TypeDesc::FLOAT;
-        OIIO::ImageSpec spec(width, height, channels, t);
-        if (int(channelNames.size()) == channels)
+    return Reported(
+        [&]
         {
-            spec.channelnames = channelNames;
-        }
-        spec.alpha_channel = -1;
-        for (int c = 0; c < channels; ++c)
-        {
-            if (spec.channelnames[size_t(c)] == "A")
+            const OIIO::TypeDesc t = type == PixelType::HALF    ? OIIO::TypeDesc::HALF
+                                     : type == PixelType::UINT8 ? OIIO::TypeDesc::UINT8
+                                                                : OIIO::TypeDesc::FLOAT;
+            OIIO::ImageSpec spec(width, height, channels, t);
+            if (int(channelNames.size()) == channels)
             {
-                spec.alpha_channel = c;
+                spec.channelnames = channelNames;
             }
-        }
-        spec.attribute("oiio:ColorSpace", description.colorSpace);
-        if (description.chromaticities.size() == 8)
-        {
-            // OpenEXR's standard attribute (OIIO passes it to other formats
-            // that can carry it): the primaries and white of the pixels.
-            spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
-                           description.chromaticities.data());
-        }
-        for (const auto& [name, value] : description.attributes)
-        {
-            spec.attribute(name, value);
-        }
-        spec.attribute("Software", "bandlight");
-        Write(path, spec, pixels, description.writeAs);
-        return {};
-    }
-    catch (const std::exception& e)
-    {
-        return e.what();
-    }
+            spec.alpha_channel = -1;
+            for (int c = 0; c < channels; ++c)
+            {
+                if (spec.channelnames[size_t(c)] == "A")
+                {
+                    spec.alpha_channel = c;
+                }
+            }
+            spec.attribute("oiio:ColorSpace", description.colorSpace);
+            if (description.chromaticities.size() == 8)
+            {
+                // OpenEXR's standard attribute (OIIO passes it to other formats
+                // that can carry it): the primaries and white of the pixels.
+                spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
+                               description.chromaticities.data());
+            }
+            for (const auto& [name, value] : description.attributes)
+            {
+                spec.attribute(name, value);
+            }
+            spec.attribute("Software", "bandlight");
+            Write(path, spec, pixels, description.writeAs);
+        });
 }
 
-std::string Read(const std::string& path, ImageData& image, bool pixels)
+ImageFilesStatus Read(const std::string& path, ImageData& image, bool pixels)
 {
-    try
-    {
-        auto input = OIIO::ImageInput::open(path);
-        if (!input)
+    return Reported(
+        [&]
         {
-            throw Exception(path + ": cannot read image: " + OIIO::geterror());
-        }
-        const OIIO::ImageSpec spec = input->spec();
-        CheckImageSize(path, spec);
-        image = Header(*input, spec);
-        image.pixels.clear();
-        if (pixels)
-        {
-            image.pixels.resize(spec.image_pixels() * size_t(spec.nchannels));
-            if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                                   image.pixels.data()))
+            auto input = OpenImage(path);
+            const OIIO::ImageSpec spec = input->spec();
+            CheckImageSize(path, spec);
+            image = Header(*input, spec);
+            image.pixels.clear();
+            if (pixels)
             {
-                throw Exception(path + ": cannot read pixels: " + input->geterror());
+                image.pixels.resize(spec.image_pixels() * size_t(spec.nchannels));
+                if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                                       image.pixels.data()))
+                {
+                    throw Exception(path + ": cannot read pixels: " + input->geterror());
+                }
             }
-        }
-        input->close();
-        return {};
-    }
-    catch (const std::exception& e)
-    {
-        return e.what();
-    }
+            input->close();
+        });
 }
 
 const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &Read,

@@ -11,6 +11,7 @@
 #include "bandlight/plugin/ConfigReferences.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/Illuminants.h"
+#include "bandlight/spectral/TextFile.h"
 
 namespace bandlight::jobs
 {
@@ -143,6 +144,8 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile, Re
 
 OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file, bool checkReferences)
 {
+    // OpenColorIO says only that it could not read the file; the errno says why.
+    const int fileError = InputFileError(file);
     try
     {
         OCIO_NAMESPACE::ConstConfigRcPtr config =
@@ -168,6 +171,10 @@ OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file, bool ch
         for (char& c : what)
         {
             c = c == '\n' ? ' ' : c;
+        }
+        if (fileError != 0)
+        {
+            throw FileError(file, fileError, "cannot read the config: " + what);
         }
         throw Exception(SourcePosition(file, line) + ": cannot read the config: " + what);
     }

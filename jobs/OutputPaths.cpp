@@ -30,25 +30,29 @@ fs::path FolderOf(const std::string& path)
 }
 
 /// Refuses a folder that does not exist, is not a folder, or cannot be
-/// written into; `path` names the output that needs it.
+/// written into (a FileError with the errno writing would meet); `path`
+/// names the output that needs it.
 void CheckWritableFolder(const std::string& path, const fs::path& folder)
 {
     struct stat st{};
     if (::stat(folder.c_str(), &st) != 0)
     {
         const int e = errno;
-        throw Exception(path + ": cannot write there: the folder " + ShowPath(folder.string()) +
-                        " " + (e == ENOENT ? "does not exist" : std::string(std::strerror(e))));
+        throw FileError(path, e,
+                        "cannot write there: the folder " + ShowPath(folder.string()) + " " +
+                            (e == ENOENT ? "does not exist" : std::string(std::strerror(e))));
     }
     if (!S_ISDIR(st.st_mode))
     {
-        throw Exception(path + ": cannot write there: " + ShowPath(folder.string()) +
-                        " is not a folder");
+        throw FileError(path, ENOTDIR,
+                        "cannot write there: " + ShowPath(folder.string()) + " is not a folder");
     }
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
     {
-        throw Exception(path + ": cannot write there: the folder " + ShowPath(folder.string()) +
-                        " is not writable (" + std::strerror(errno) + ")");
+        const int e = errno;
+        throw FileError(path, e,
+                        "cannot write there: the folder " + ShowPath(folder.string()) +
+                            " is not writable (" + std::strerror(e) + ")");
     }
 }
 
@@ -152,8 +156,9 @@ void OutputPlan::check() const
         {
             if (fs::exists(st) && !fs::is_directory(st))
             {
-                throw ParameterError(o.param + " " + ShowPath(o.path) +
-                                     " is a file, not a folder");
+                throw FileError::ForParameter(o.path, ENOTDIR,
+                                              o.param + " " + ShowPath(o.path) +
+                                                  " is a file, not a folder");
             }
             // The nearest existing ancestor is where the folder is created.
             fs::path existing = fs::absolute(o.path, ec).lexically_normal();
@@ -167,7 +172,9 @@ void OutputPlan::check() const
         }
         if (fs::is_directory(st))
         {
-            throw ParameterError(o.param + " " + ShowPath(o.path) + " is a folder, not a file");
+            throw FileError::ForParameter(o.path, EISDIR,
+                                          o.param + " " + ShowPath(o.path) +
+                                              " is a folder, not a file");
         }
         const fs::path folder = FolderOf(o.path);
         if (folders.insert(folder.string()).second)

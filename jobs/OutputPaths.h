@@ -18,9 +18,9 @@ std::string ShowPath(const std::string& path);
 /// naming the parameter and the path:
 /// - an empty path (ParameterError);
 /// - a file output that is an existing directory, or a folder output that
-///   is an existing file (ParameterError);
+///   is an existing file (FileError EISDIR, ENOTDIR, naming the parameter);
 /// - a file output whose folder does not exist, is not a folder, or cannot
-///   be written (Exception naming the folder);
+///   be written (FileError ENOENT, ENOTDIR, EACCES, naming the folder);
 /// - a folder output none of whose existing ancestors can be written;
 /// - a file output that is one of the inputs (the same file, by device and
 ///   inode, or the same path), unless it was added with `mayReplaceInput`;

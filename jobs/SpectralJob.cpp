@@ -191,11 +191,7 @@ namespace
 ImageData ReadImageData(const std::string& path, bool pixels)
 {
     ImageData image;
-    const std::string error = ImageFiles().read(path, image, pixels);
-    if (!error.empty())
-    {
-        throw Exception(error);
-    }
+    ThrowIfFailed(ImageFiles().read(path, image, pixels));
     return image;
 }
 }  // namespace

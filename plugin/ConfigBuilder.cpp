@@ -742,8 +742,10 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, Ou
         std::filesystem::create_directories(d, ec);
         if (ec || !std::filesystem::is_directory(d))
         {
-            throw Exception(d + ": cannot create the directory (" +
-                            (ec ? ec.message() : std::string("a file is in the way")) + ")");
+            // A file where the folder belongs is ENOTDIR, as for a file on its path.
+            throw FileError(d, ec ? ec.value() : ENOTDIR,
+                            "cannot create the directory (" +
+                                (ec ? ec.message() : std::string("a file is in the way")) + ")");
         }
     };
     makeDir(dir);

@@ -76,13 +76,22 @@ std::string TempName(const std::string& path)
 
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_temp(TempName(m_path))
 {
+    if (m_path.empty())
+    {
+        // The temporary name would be a file in the current folder, and the
+        // rename would fail only after the whole output had been written.
+        throw FileError(m_path, ENOENT,
+                        std::string("cannot create output file (") + std::strerror(ENOENT) + ")");
+    }
     m_slot = Register(m_temp);
+    errno = 0;
     m_stream.open(m_temp, std::ios::binary | std::ios::trunc);
     if (!m_stream)
     {
-        const std::string reason = std::strerror(errno);
+        const int error = errno;
         Unregister(m_slot);
-        throw Exception(m_path + ": cannot create output file (" + reason + ")");
+        throw FileError(m_path, error,
+                        std::string("cannot create output file (") + std::strerror(error) + ")");
     }
 }
 
@@ -100,18 +109,22 @@ void AtomicFile::finishWriting()
 {
     if (m_stream.is_open())
     {
+        errno = 0;
         m_stream.flush();
         const bool ok = bool(m_stream);
         m_stream.close();
         if (!ok)
         {
-            throw Exception(m_path + ": write failed (disk full?)");
+            // errno as the failed write left it (ENOSPC, EIO, ...), or 0.
+            const int error = errno;
+            throw FileError(m_path, error, "write failed (disk full?)");
         }
     }
     // A writer that used tempPath() directly must have left a file there.
     if (::access(m_temp.c_str(), F_OK) != 0)
     {
-        throw Exception(m_path + ": the output was not written");
+        const int error = errno;
+        throw FileError(m_path, error, "the output was not written");
     }
 }
 
@@ -120,7 +133,9 @@ void AtomicFile::commit()
     finishWriting();
     if (std::rename(m_temp.c_str(), m_path.c_str()) != 0)
     {
-        throw Exception(m_path + ": cannot replace output file (" + std::strerror(errno) + ")");
+        const int error = errno;
+        throw FileError(m_path, error,
+                        std::string("cannot replace output file (") + std::strerror(error) + ")");
     }
     m_committed = true;
     Unregister(m_slot);
@@ -165,20 +180,20 @@ void OutputSet::commit()
         }
     }
     size_t done = 0;
-    std::string failure;
+    int failure = 0;  // errno of the rename that failed
     for (; done < m_files.size(); ++done)
     {
         AtomicFile& f = *m_files[done];
         if (std::rename(f.m_temp.c_str(), f.m_path.c_str()) != 0)
         {
-            failure = f.m_path + ": cannot replace output file (" + std::strerror(errno) + ")";
+            failure = errno ? errno : EIO;
             break;
         }
         f.m_committed = true;
     }
     for (size_t i = 0; i < m_files.size(); ++i)
     {
-        if (!failure.empty() && i < done)
+        if (failure != 0 && i < done)
         {
             // Put the previous file back, or remove the new one if there was none.
             if (!backups[i].empty())
@@ -195,9 +210,11 @@ void OutputSet::commit()
             std::remove(backups[i].c_str());
         }
     }
-    if (!failure.empty())
+    if (failure != 0)
     {
-        throw Exception(failure + "; the other outputs of the set were left as they were");
+        throw FileError(m_files[done]->m_path, failure,
+                        std::string("cannot replace output file (") + std::strerror(failure) +
+                            "); the other outputs of the set were left as they were");
     }
 }
 

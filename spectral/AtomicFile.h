@@ -17,7 +17,8 @@ namespace bandlight
 class AtomicFile
 {
 public:
-    /// Throws Exception when the temporary file cannot be created.
+    /// Throws FileError when the temporary file cannot be created (its
+    /// folder is missing or not writable, or `path` is empty).
     explicit AtomicFile(std::string path);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
@@ -30,14 +31,14 @@ public:
     std::ofstream& stream() noexcept { return m_stream; }
 
     /// Flushes and renames the temporary file over the destination; throws
-    /// Exception naming the file on any write or rename failure.
+    /// FileError naming the file on any write or rename failure.
     void commit();
 
     /// The destination path.
     const std::string& path() const noexcept { return m_path; }
 
     /// The first half of commit(): flushes and closes the temporary file and
-    /// throws Exception naming the file when anything written failed. The
+    /// throws FileError naming the file when anything written failed. The
     /// destination is not touched yet (OutputSet renames a set together).
     void finishWriting();
 
@@ -67,14 +68,15 @@ public:
     OutputSet& operator=(const OutputSet&) = delete;
 
     /// Adds an output to the set; the reference stays valid for the set's
-    /// life. Throws Exception when its temporary file cannot be created or
-    /// when the same path is added twice.
+    /// life. Throws FileError when its temporary file cannot be created,
+    /// Exception when the same path is added twice.
     AtomicFile& add(const std::string& path);
 
     /// Writes a whole file of the set through a callback that fills it.
     void write(const std::string& path, const std::function<void(std::ostream&)>& fill);
 
-    /// Renames every file of the set over its destination (see above).
+    /// Renames every file of the set over its destination (see above);
+    /// throws FileError naming the file that could not be written or renamed.
     void commit();
 
     size_t size() const noexcept { return m_files.size(); }

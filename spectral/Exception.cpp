@@ -6,6 +6,39 @@
 namespace bandlight
 {
 
+std::string PathInMessage(const std::string& path)
+{
+    return path.empty() ? "'' (an empty path)" : path;
+}
+
+FileError::FileError(const std::string& path, int error, const std::string& what)
+    : FileError(Whole{}, PathInMessage(path) + ": " + what, path, error)
+{
+}
+
+FileError::FileError(Whole, const std::string& message, const std::string& path, int error)
+    : Exception(message), m_path(path), m_error(error)
+{
+}
+
+FileError FileError::WithMessage(const std::string& path, int error, const std::string& message)
+{
+    return FileError(Whole{}, message, path, error);
+}
+
+FileError FileError::ForParameter(const std::string& path, int error,
+                                  const std::string& messageTemplate)
+{
+    FileError e(Whole{}, SpellParameters(messageTemplate, Face::CPP), path, error);
+    e.m_template = messageTemplate;
+    return e;
+}
+
+std::string FileError::spelled(Face face) const
+{
+    return m_template.empty() ? std::string(what()) : SpellParameters(m_template, face);
+}
+
 std::string SourcePosition(const std::string& source, size_t line)
 {
     return line ? source + ":" + std::to_string(line) : source;

@@ -25,6 +25,51 @@ enum class Face
     PYTHON,
 };
 
+/// An Exception about a file that could not be opened, read, created,
+/// renamed or written: it carries the path and the errno that says why (0
+/// when the system gave none). Content that was read and refused (a
+/// malformed spectrum, a config OpenColorIO cannot parse) is an Exception,
+/// never a FileError. Python raises it as the OSError subclass of its errno
+/// (FileNotFoundError, PermissionError, ...).
+class FileError : public Exception
+{
+public:
+    /// The message is "PATH: what", the path as PathInMessage() writes it.
+    FileError(const std::string& path, int error, const std::string& what);
+
+    /// A FileError with a message already made (passed on from elsewhere,
+    /// as the image module reports its errors).
+    static FileError WithMessage(const std::string& path, int error, const std::string& message);
+
+    /// A FileError whose message names a parameter of the request, in a
+    /// template as ParameterError takes it ("{out} '/x' is a folder, not a
+    /// file"): what() spells it as the C++ API does, spelled() as a face does.
+    static FileError ForParameter(const std::string& path, int error,
+                                  const std::string& messageTemplate);
+
+    /// The file, as given (may be empty).
+    const std::string& path() const noexcept { return m_path; }
+    /// errno: ENOENT, EACCES, EISDIR, ...; 0 when the system gave none.
+    int error() const noexcept { return m_error; }
+    /// The message with its parameters spelled as `face` spells them (the
+    /// message itself when it names none).
+    std::string spelled(Face face) const;
+
+private:
+    struct Whole
+    {
+    };
+    FileError(Whole, const std::string& message, const std::string& path, int error);
+
+    std::string m_path;
+    int m_error;
+    std::string m_template;  ///< empty: the message names no parameter
+};
+
+/// A path as messages name it: the path itself, or "'' (an empty path)",
+/// so that an empty name does not leave a message starting with ": ".
+std::string PathInMessage(const std::string& path);
+
 /// An Exception about parameters of a request. The message is a template in
 /// which `{name}` names a parameter (`{working_space}`: "--working-space" to
 /// the command, "working_space" to Python) and `{name=}` gives it a value

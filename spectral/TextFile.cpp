@@ -1,47 +1,99 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/spectral/TextFile.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "bandlight/spectral/Exception.h"
 
 namespace bandlight
 {
 
-std::string ReadTextFile(const std::string& path, const std::string& what)
+int InputFileError(const std::string& path)
 {
     struct stat st
     {
     };
     if (::stat(path.c_str(), &st) != 0)
     {
-        throw Exception(path + ": cannot open " + what);
+        return errno ? errno : EIO;
+    }
+    if (S_ISDIR(st.st_mode))
+    {
+        return EISDIR;
     }
     if (!S_ISREG(st.st_mode))
     {
-        throw Exception(path + ": not a regular file (a " + what + " is a text file)");
+        return 0;  // a device or a pipe is not opened here: opening one may wait or act
+    }
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+    {
+        return errno ? errno : EIO;
+    }
+    ::close(fd);
+    return 0;
+}
+
+std::string ReadTextFile(const std::string& path, const std::string& what)
+{
+    // stat before open: a device or a pipe is refused without opening it.
+    struct stat st
+    {
+    };
+    if (::stat(path.c_str(), &st) != 0)
+    {
+        const int error = errno;
+        throw FileError(path, error, "cannot open " + what);
+    }
+    if (S_ISDIR(st.st_mode))
+    {
+        throw FileError(path, EISDIR, "is a directory, not a " + what);
+    }
+    if (!S_ISREG(st.st_mode))
+    {
+        throw Exception(PathInMessage(path) + ": not a regular file (a " + what +
+                        " is a text file)");
     }
     if (size_t(st.st_size) > MAX_TEXT_FILE_BYTES)
     {
         throw Exception(path + ": " + std::to_string(st.st_size) + " bytes is too large for a " +
                         what + " (limit " + std::to_string(MAX_TEXT_FILE_BYTES) + ")");
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
     {
-        throw Exception(path + ": cannot open " + what);
+        const int error = errno;
+        throw FileError(path, error, "cannot open " + what);
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
+    std::string text;
+    text.reserve(size_t(st.st_size));
+    char buffer[1 << 16];
+    for (;;)
     {
-        throw Exception(path + ": read error");
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+        {
+            continue;
+        }
+        if (n < 0)
+        {
+            const int error = errno;
+            ::close(fd);
+            throw FileError(path, error, "read error");
+        }
+        if (n == 0)
+        {
+            break;
+        }
+        text.append(buffer, size_t(n));
     }
-    return text.str();
+    ::close(fd);
+    return text;
 }
 
 namespace

@@ -10,10 +10,18 @@ namespace bandlight
 /// this stops a mistaken path to a device or a huge file early).
 constexpr size_t MAX_TEXT_FILE_BYTES = size_t(64) << 20;
 
-/// Reads a whole text file. Throws Exception "PATH: ..." when the path cannot
-/// be opened, is not a regular file or is larger than MAX_TEXT_FILE_BYTES.
-/// `what` names the kind of file in the message ("spectrum file").
+/// Reads a whole text file. Throws FileError "PATH: ..." when the path
+/// cannot be opened or read (with its errno; a directory is EISDIR), and
+/// Exception when it is not a regular file (a device, a pipe) or is larger
+/// than MAX_TEXT_FILE_BYTES. `what` names the kind of file in the message
+/// ("spectrum file").
 std::string ReadTextFile(const std::string& path, const std::string& what);
+
+/// 0 when `path` is a regular file that opens for reading (or a device or
+/// pipe, which is not opened), else the errno that says why not: ENOENT,
+/// EACCES, ENOTDIR, EISDIR for a directory. For files that another library
+/// opens (OpenImageIO, OpenColorIO), whose errors do not say why.
+int InputFileError(const std::string& path);
 
 /// Checks that `text` is UTF-8 (ASCII included) and removes a leading UTF-8
 /// byte-order mark. UTF-16/UTF-32 (byte-order mark or NUL bytes) and byte

@@ -30,9 +30,7 @@ std::vector<ReflectanceSet> ToSets(const py::object& arg)
     for (const py::handle f : files)
     {
         // As `--reflectances FILE`: the file read as it is, named by its path.
-        const std::string path =
-            py::str(py::module_::import("os").attr("fspath")(f)).cast<std::string>();
-        sets.push_back(ReadingFile(path, [&] { return jobs::ReflectanceSetFromFile(path); }));
+        sets.push_back(jobs::ReflectanceSetFromFile(PathText(f, "reflectances")));
     }
     return sets;
 }

@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Arguments as the command reads them, and numpy arrays in and out.
-#include <sys/stat.h>
-
 #include <sstream>
 
 #include "PyBandlight.h"
@@ -13,14 +11,6 @@ namespace bandlight::python
 
 namespace
 {
-bool Exists(const std::string& path)
-{
-    struct stat st
-    {
-    };
-    return ::stat(path.c_str(), &st) == 0;
-}
-
 std::string TypeName(const py::handle& arg)
 {
     return py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>();
@@ -29,11 +19,6 @@ std::string TypeName(const py::handle& arg)
 bool IsPathLike(const py::handle& arg)
 {
     return !py::isinstance<py::str>(arg) && py::hasattr(arg, "__fspath__");
-}
-
-std::string FsPath(const py::handle& arg)
-{
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
 }
 
 std::string ShapeText(const py::array& a)
@@ -60,17 +45,14 @@ Light ToLight(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        const std::string text = arg.cast<std::string>();
-        return !IsBuiltinIlluminant(text) && Exists(text)
-                   ? ReadingFile(text, [&] { return jobs::ResolveIlluminant(text, Warnings()); })
-                   : jobs::ResolveIlluminant(text, Warnings());
+        // A name or a file: as a file name, it must hold no NUL byte.
+        return jobs::ResolveIlluminant(PathText(arg, "an illuminant"), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, even one named like a built-in.
-        const std::string path = FsPath(arg);
-        const NamedSpectrum s = ReadingFile(path, [&] { return ReadSpectraFile(path).front(); });
-        return jobs::CheckedIlluminant(s, path, Warnings());
+        const std::string path = PathText(arg, "an illuminant");
+        return jobs::CheckedIlluminant(ReadSpectraFile(path).front(), path, Warnings());
     }
     throw py::type_error(
         "an illuminant is a name or file (str), a file (os.PathLike) or a "
@@ -118,18 +100,15 @@ std::vector<NamedSpectrum> ToReflectances(const py::handle& arg)
     }
     if (py::isinstance<py::str>(arg))
     {
-        const std::string text = arg.cast<std::string>();
-        return Exists(text)
-                   ? ReadingFile(text, [&] { return jobs::ResolveReflectances(text, Warnings()); })
-                   : jobs::ResolveReflectances(text, Warnings());
+        // A name or a file: as a file name, it must hold no NUL byte.
+        return jobs::ResolveReflectances(PathText(arg, "remittances"), Warnings());
     }
     if (IsPathLike(arg))
     {
         // A path is always a file, read and checked as ResolveReflectances
         // reads one.
-        const std::string path = FsPath(arg);
-        std::vector<NamedSpectrum> spectra =
-            ReadingFile(path, [&] { return ReadSpectraFile(path); });
+        const std::string path = PathText(arg, "remittances");
+        std::vector<NamedSpectrum> spectra = ReadSpectraFile(path);
         for (const NamedSpectrum& s : spectra)
         {
             jobs::CheckRemittance(s, path, Warnings());
@@ -189,7 +168,7 @@ jobs::PlatesRequest PlatesArgs::options() const
             throw py::type_error("camera is a file (str or os.PathLike) or None, not " +
                                  TypeName(camera));
         }
-        o.camera = FsPath(camera);
+        o.camera = PathText(camera, "camera");
     }
     return o;
 }
@@ -201,7 +180,7 @@ std::shared_ptr<const SpectralCamera> PlatesArgs::loadCamera() const
     {
         return nullptr;
     }
-    return ReadingFile(o.camera, [&] { return o.loadCamera(); });
+    return o.loadCamera();
 }
 
 MethodSpec ToMethod(const std::string& name, const py::handle& training, const PlatesArgs& plates)
@@ -375,15 +354,21 @@ py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& 
     return std::move(a);
 }
 
-std::string PathText(const py::object& arg, const std::string& what)
+std::string PathText(const py::handle& arg, const std::string& what)
 {
     if (!py::isinstance<py::str>(arg) && !py::hasattr(arg, "__fspath__"))
     {
-        throw py::type_error(
-            what + " is a file (str or os.PathLike), not " +
-            py::str(py::type::handle_of(arg).attr("__name__")).cast<std::string>());
+        throw py::type_error(what + " is a file (str or os.PathLike), not " + TypeName(arg));
     }
-    return py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+    const std::string path =
+        py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
+    if (path.find('\0') != std::string::npos)
+    {
+        // The system would read the name only up to it: another file.
+        throw Exception(what + " '" + OneLine(path, 200) +
+                        "' holds a NUL byte, which no file name can");
+    }
+    return path;
 }
 
 py::dict FrameRunDict(size_t frames, size_t skipped, const std::vector<jobs::FrameFailure>& failed,

@@ -3,9 +3,7 @@
 #include "PyBandlight.h"
 #include "bandlight/jobs/Defaults.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <cerrno>
 
 #include <OpenColorIO/OpenColorIO.h>
 
@@ -17,6 +15,26 @@ namespace
 /// bandlight.NoteWarning, created once at import (never released: the
 /// interpreter owns it through the module).
 PyObject* g_noteWarning = nullptr;
+
+/// The classes a FileError is raised as: for each OSError subclass an errno
+/// implies, a subclass of it whose str() is the library's message alone (an
+/// OSError with `filename` set would print "[Errno 2] message: 'path'").
+/// Created once at import, kept by the module under these private names (so
+/// that pickle finds them by name).
+struct FileErrorClass
+{
+    PyObject* base;
+    const char* name;
+    PyObject* type;
+};
+FileErrorClass g_fileErrors[] = {
+    {PyExc_FileNotFoundError, "_FileNotFoundError", nullptr},
+    {PyExc_PermissionError, "_PermissionError", nullptr},
+    {PyExc_IsADirectoryError, "_IsADirectoryError", nullptr},
+    {PyExc_NotADirectoryError, "_NotADirectoryError", nullptr},
+    {PyExc_FileExistsError, "_FileExistsError", nullptr},
+    {PyExc_OSError, "_OSError", nullptr},
+};
 
 /// The OSError subclass Python itself would raise for `error`.
 PyObject* OsErrorType(int error)
@@ -39,20 +57,46 @@ PyObject* OsErrorType(int error)
     }
 }
 
-/// Raises `type(message)` with `errno` set: str(exc) is the message alone,
-/// exactly the line `bandlight` prints after "bandlight: ".
-void RaiseOsError(int error, const std::string& message)
+/// str() of the exceptions a FileError is raised as: the message, which
+/// they hold as strerror.
+py::object MessageOnly(py::handle self)
 {
-    PyObject* type = OsErrorType(error);
-    py::object exc =
-        py::reinterpret_steal<py::object>(PyObject_CallFunction(type, "s", message.c_str()));
+    py::object message = self.attr("strerror");
+    if (py::isinstance<py::str>(message))
+    {
+        return message;
+    }
+    return py::handle(PyExc_OSError).attr("__str__")(self);  // made another way
+}
+
+/// Raises the OSError subclass of `error` (see g_fileErrors) with errno
+/// (None when 0), the message as strerror and str(), and `filename` the
+/// path (None when not known).
+void RaiseFileError(int error, const std::string& message, const std::string* path)
+{
+    PyObject* base = OsErrorType(error);
+    PyObject* type = base;
+    for (const FileErrorClass& c : g_fileErrors)
+    {
+        type = c.base == base && c.type ? c.type : type;
+    }
+    const py::object code = error != 0 ? py::object(py::int_(error)) : py::object(py::none());
+    // A message quoting bytes that are not UTF-8 keeps the rest; a path is
+    // decoded as os.fsdecode() decodes file names.
+    const py::object text = py::reinterpret_steal<py::object>(
+        PyUnicode_DecodeUTF8(message.data(), py::ssize_t(message.size()), "replace"));
+    const py::object filename =
+        path ? py::reinterpret_steal<py::object>(PyUnicode_DecodeFSDefault(path->c_str()))
+             : py::object(py::none());
+    if (!text || !filename)
+    {
+        return;  // the decoding set its own error
+    }
+    const py::object exc = py::reinterpret_steal<py::object>(
+        PyObject_CallFunctionObjArgs(type, code.ptr(), text.ptr(), filename.ptr(), nullptr));
     if (!exc)
     {
         return;  // the call set its own error
-    }
-    if (error != 0)
-    {
-        exc.attr("errno") = error;
     }
     PyErr_SetObject(type, exc.ptr());
 }
@@ -63,66 +107,6 @@ std::string Message(const char* what)
     return OneLine(what, 4000);
 }
 }  // namespace
-
-int InputFileProblem(const std::string& path)
-{
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-    {
-        return errno ? errno : EIO;
-    }
-    struct stat st
-    {
-    };
-    const int error = ::fstat(fd, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;
-    ::close(fd);
-    return error;
-}
-
-int OutputFileProblem(const std::string& path, bool folder)
-{
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path target(path);
-    if (fs::is_directory(target, ec))
-    {
-        // An existing folder: a package folder is filled, a file cannot be one.
-        return !folder ? EISDIR : ::access(path.c_str(), W_OK | X_OK) == 0 ? 0 : errno;
-    }
-    // A package folder is created with its parents; a file's folder must exist.
-    fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    if (folder)
-    {
-        while (!dir.empty() && !fs::exists(dir, ec))
-        {
-            dir = dir.parent_path();
-        }
-        dir = dir.empty() ? fs::path(".") : dir;
-    }
-    if (!fs::exists(dir, ec))
-    {
-        return ENOENT;
-    }
-    if (!fs::is_directory(dir, ec))
-    {
-        return ENOTDIR;
-    }
-    return ::access(dir.c_str(), W_OK | X_OK) == 0 ? 0 : errno;
-}
-
-bool IsOutputFailure(const std::string& message)
-{
-    for (const char* phrase :
-         {": cannot create output file (", ": write failed", ": cannot replace output file (",
-          ": the output was not written", ": cannot create the directory ("})
-    {
-        if (message.find(phrase) != std::string::npos)
-        {
-            return true;
-        }
-    }
-    return false;
-}
 
 void Warn(const std::string& note)
 {
@@ -193,6 +177,27 @@ void AddErrors(py::module_& m)
     }
     m.attr("NoteWarning") = py::handle(g_noteWarning);
 
+    // The classes a FileError is raised as, named in this extension module
+    // (called before the module takes the package's name).
+    const std::string moduleName = py::str(m.attr("__name__"));
+    for (FileErrorClass& c : g_fileErrors)
+    {
+        const std::string name = moduleName + "." + c.name;
+        const std::string doc =
+            std::string("A ") + py::str(py::handle(c.base).attr("__name__")).cast<std::string>() +
+            " about a file bandlight could not open, read, create or write: str() is the\n"
+            "library's message (the line ``bandlight`` prints), filename the file.";
+        c.type = PyErr_NewExceptionWithDoc(name.c_str(), doc.c_str(), c.base, nullptr);
+        if (!c.type)
+        {
+            throw py::error_already_set();
+        }
+        const py::handle cls(c.type);
+        cls.attr("__str__") =
+            py::cpp_function(&MessageOnly, py::name("__str__"), py::is_method(cls));
+        m.attr(c.name) = cls;
+    }
+
     // A local translator: it applies to this module's functions only, so
     // PyOpenColorIO's own translation of OCIO::Exception (the two modules
     // share pybind11's internals) is left as it is.
@@ -208,7 +213,7 @@ void AddErrors(py::module_& m)
             }
             catch (const FileError& e)
             {
-                RaiseOsError(e.error(), Message(e.what()));
+                RaiseFileError(e.error(), Message(e.spelled(Face::PYTHON).c_str()), &e.path());
             }
             catch (const ParameterError& e)
             {
@@ -221,7 +226,8 @@ void AddErrors(py::module_& m)
             }
             catch (const OCIO_NAMESPACE::ExceptionMissingFile& e)
             {
-                RaiseOsError(ENOENT, Message(e.what()));
+                // A file a config refers to (a LUT), named in the message only.
+                RaiseFileError(ENOENT, Message(e.what()), nullptr);
             }
             catch (const OCIO_NAMESPACE::Exception& e)
             {
@@ -248,15 +254,18 @@ PYBIND11_MODULE(_bandlight, m)
         "measured against an exact spectral core.\n\n"
         "Transforms are PyOpenColorIO objects, spectra and colours numpy arrays. Errors are\n"
         "ValueError (bad names and values, malformed files: the message names the file and\n"
-        "line) or OSError (files that cannot be read or written), with the message the\n"
-        "``bandlight`` command prints.";
+        "line) or the OSError subclass of the system's reason (FileNotFoundError,\n"
+        "PermissionError, IsADirectoryError, ...; files that cannot be opened, read or\n"
+        "written, with errno and filename set), with the message the ``bandlight`` command\n"
+        "prints.";
     m.attr("__version__") = bandlight::defaults::VERSION;
 
+    // The error classes live in this extension (pickle finds them there).
+    AddErrors(m);
     // Classes and functions say they live in `bandlight` (the package that
     // re-exports them), not in this extension's own name.
     const py::object ownName = m.attr("__name__");
     m.attr("__name__") = "bandlight";
-    AddErrors(m);
     AddSpectrum(m);
     AddColorimetry(m);
     AddBands(m);

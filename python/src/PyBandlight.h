@@ -4,11 +4,9 @@
 // The Python module's shared pieces: one Add<Area>() per Py<Area>.cpp (as
 // PyOpenColorIO's bindings are organised), converters from Python values to
 // the jobs' requests (jobs/: the same library the command calls), numpy
-// helpers, the reporter that makes Python warnings of the jobs' notes, and
-// the file-error boundary that makes OSError of what is an I/O failure.
+// helpers, the reporter that makes Python warnings of the jobs' notes, the
+// exceptions' translation, and the file-path argument type.
 
-#include <cerrno>
-#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -17,7 +15,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/Inputs.h"
@@ -33,7 +30,15 @@
 namespace bandlight::python
 {
 namespace py = pybind11;
-using Path = std::filesystem::path;
+
+/// A file argument: a str or an os.PathLike, as PathText() reads it (so a
+/// NUL byte in it is a ValueError). Functions take it as `const Path&` or
+/// `std::optional<Path>` (None).
+struct Path
+{
+    std::string text;
+    const std::string& string() const noexcept { return text; }
+};
 
 // ---------------------------------------------------------------------------
 // One registration per area (PyOpenColorIO's layout: one Py<Area>.cpp each).
@@ -49,85 +54,13 @@ void AddApply(py::module_& m);
 void AddSpectralImage(py::module_& m);
 
 // ---------------------------------------------------------------------------
-// Errors (PyBandlight.cpp).
-
-/// An input or output file that could not be used: Python gets an OSError
-/// (FileNotFoundError, PermissionError, IsADirectoryError, ... by `error`)
-/// whose text is the library's message, the line `bandlight` prints.
-class FileError : public Exception
-{
-public:
-    FileError(const std::string& what, int error) : Exception(what), m_error(error) {}
-    int error() const noexcept { return m_error; }
-
-private:
-    int m_error;
-};
-
-/// 0 when `path` opens for reading as a regular file, else the errno that
-/// says why not (ENOENT, EACCES, EISDIR, ...).
-int InputFileProblem(const std::string& path);
-
-/// 0 when the file `path` can be created (its folder exists and is
-/// writable) or, with `folder`, the folder `path` can be made or filled;
-/// else the errno that says why not.
-int OutputFileProblem(const std::string& path, bool folder);
-
-/// True for the library's own messages about output files it could not
-/// create, write or rename (spectral/AtomicFile.cpp, WriteConfigPackage).
-bool IsOutputFailure(const std::string& message);
-
-/// Runs `fn`, which reads `path`; an Exception it throws becomes a
-/// FileError (OSError) when the file cannot be read at all, and stays an
-/// Exception (ValueError) when the file was read and its content refused.
-template <typename Fn>
-auto ReadingFile(const std::string& path, Fn&& fn) -> decltype(fn())
-{
-    try
-    {
-        return fn();
-    }
-    catch (const FileError&)
-    {
-        throw;
-    }
-    catch (const Exception& e)
-    {
-        if (const int error = InputFileProblem(path))
-        {
-            throw FileError(e.what(), error);
-        }
-        throw;
-    }
-}
-
-/// Runs `fn`, which writes the file `path` (or, with `folder`, fills the
-/// folder `path`, as WriteConfigPackage does); a failure to create or write
-/// it becomes a FileError, any other refusal stays an Exception.
-template <typename Fn>
-auto WritingFile(const std::string& path, bool folder, Fn&& fn) -> decltype(fn())
-{
-    try
-    {
-        return fn();
-    }
-    catch (const FileError&)
-    {
-        throw;
-    }
-    catch (const Exception& e)
-    {
-        if (const int error = OutputFileProblem(path, folder))
-        {
-            throw FileError(e.what(), error);
-        }
-        if (IsOutputFailure(e.what()))
-        {
-            throw FileError(e.what(), EIO);
-        }
-        throw;
-    }
-}
+// Errors (PyBandlight.cpp). AddErrors registers how the library's exceptions
+// become Python's, by their C++ type (as PyOpenColorIO registers
+// ExceptionMissingFile): FileError is the OSError subclass of its errno
+// (FileNotFoundError, PermissionError, IsADirectoryError, NotADirectoryError,
+// FileExistsError, else OSError) with `errno` and `filename` set;
+// ParameterError and every other Exception are ValueError. str() of each is
+// the library's message, the line `bandlight` prints after "bandlight: ".
 
 /// Issues a bandlight.NoteWarning (what `bandlight` prints as "note: ...").
 void Warn(const std::string& note);
@@ -208,8 +141,10 @@ BandSet ToBands(const py::handle& arg);
 MatchingSet ToMatchingSet(const std::string& text);
 
 /// A file argument (str or os.PathLike) as text; TypeError naming `what`
-/// otherwise.
-std::string PathText(const py::object& arg, const std::string& what);
+/// otherwise. A NUL byte is an Exception (ValueError): the system would
+/// read the name only up to it and use another file. Every file name Python
+/// hands the library passes here.
+std::string PathText(const py::handle& arg, const std::string& what);
 
 /// A frame set's summary: {"frames", "skipped", "failed": [(frame, error)],
 /// "seconds"}.
@@ -269,3 +204,29 @@ py::array_t<double> NewArray(std::vector<py::ssize_t> shape, py::ssize_t trailin
 py::object ScalarOrArray(py::array_t<double> a, const std::vector<py::ssize_t>& shape);
 
 }  // namespace bandlight::python
+
+namespace pybind11::detail
+{
+/// bandlight::python::Path from a str or an os.PathLike (named os.PathLike
+/// in signatures, as pybind11 names std::filesystem::path).
+template <>
+struct type_caster<bandlight::python::Path>
+{
+    PYBIND11_TYPE_CASTER(bandlight::python::Path, const_name("os.PathLike"));
+
+    bool load(handle src, bool)
+    {
+        if (!isinstance<str>(src) && !hasattr(src, "__fspath__"))
+        {
+            return false;
+        }
+        value.text = bandlight::python::PathText(src, "a path");
+        return true;
+    }
+
+    static handle cast(const bandlight::python::Path& path, return_value_policy, handle)
+    {
+        return str(path.text).release();
+    }
+};
+}  // namespace pybind11::detail

@@ -33,9 +33,7 @@ OCIO::ConstConfigRcPtr ToConfig(const py::object& arg)
 {
     if (py::isinstance<py::str>(arg) || py::hasattr(arg, "__fspath__"))
     {
-        const std::string path =
-            py::str(py::module_::import("os").attr("fspath")(arg)).cast<std::string>();
-        return ReadingFile(path, [&] { return jobs::ReadConfigFile(path); });
+        return jobs::ReadConfigFile(PathText(arg, "base"));
     }
     return CastTo<OCIO::ConstConfigRcPtr>(arg, "a config",
                                           "a file (str, os.PathLike) or a PyOpenColorIO.Config");
@@ -72,8 +70,7 @@ OCIO::ConfigRcPtr Config(const std::optional<Path>& out, const std::optional<std
     {
         PlatesArgs{plates, adaptation, camera, cameraIdt}.loadCamera();  // OSError when unreadable
     }
-    const auto make = [&] { return jobs::MakeConfig(r, Warnings()); };
-    return (!r.out ? make() : WritingFile(*r.out, true, make)).package.config;
+    return jobs::MakeConfig(r, Warnings()).package.config;
 }
 
 py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
@@ -106,7 +103,7 @@ py::dict Lut(const Path& pathArg, const py::object& src, const py::object& dst,
     jobs::LutResult result;
     {
         py::gil_scoped_release release;
-        result = WritingFile(r.out, false, [&] { return jobs::MakeLut(r, Warnings()); });
+        result = jobs::MakeLut(r, Warnings());
     }
     py::dict d;
     d["lut"] = result.files.lut;

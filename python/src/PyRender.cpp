@@ -26,13 +26,6 @@ jobs::RenderRequest SceneRequest(const std::optional<Path>& scene,
     return r;
 }
 
-/// Reads and plans the scene; a scene file that cannot be read is an OSError.
-jobs::PreparedRender Prepare(const jobs::RenderRequest& r)
-{
-    return r.scene.empty() ? jobs::PrepareRender(r)
-                           : ReadingFile(r.scene, [&] { return jobs::PrepareRender(r); });
-}
-
 /// The image as (height, width, channels) float32, owning the renderer's
 /// buffer (no copy).
 py::array_t<float> ToImage(RenderedImage&& img)
@@ -99,15 +92,14 @@ py::object Render(const std::optional<Path>& scene, const std::optional<std::str
     {
         r.previewPath = PathText(preview, "preview");
     }
-    const jobs::PreparedRender prepared = Prepare(r);
+    const jobs::PreparedRender prepared = jobs::PrepareRender(r);
     // Refused outputs are a ValueError, even when `out`'s folder is missing too.
     jobs::CheckRenderOutputs(prepared);
     PythonReporter reporter;
     jobs::RenderResult result;
     {
         py::gil_scoped_release release;
-        const auto run = [&] { return jobs::MakeRender(prepared, reporter); };
-        result = r.out.empty() ? run() : WritingFile(r.out, false, run);
+        result = jobs::MakeRender(prepared, reporter);
     }
     reporter.raiseIfFailed();
     if (r.out.empty())
@@ -159,7 +151,7 @@ when a file cannot be read or written.
         {
             jobs::RenderRequest r = SceneRequest(scene, text, source, mode, unplanned);
             r.explain = true;
-            return Prepare(r).explanation;
+            return jobs::PrepareRender(r).explanation;
         },
         py::arg("scene") = py::none(), py::kw_only(), py::arg("text") = py::none(),
         py::arg("source") = defaults::SCENE_SOURCE, py::arg("mode") = py::none(),

@@ -60,7 +60,7 @@ py::tuple ReadSpectral(const py::object& path, const py::object& channels, const
         Options(py::none(), py::none(), defaults::WORKING_SPACE, defaults::PLATES,
                 defaults::ADAPTATION, py::str(defaults::OBSERVER), channels, kind, sampling);
     const std::string file = PathText(path, "path");
-    jobs::SpectralImage image = ReadingFile(file, [&] { return jobs::ReadSpectralImage(file, o); });
+    jobs::SpectralImage image = jobs::ReadSpectralImage(file, o);
     const size_t n = image.layout.wavelengths.size();
     std::vector<float> spectra = image.spectra();
     py::array_t<float> array({size_t(image.height), size_t(image.width), n});

@@ -356,12 +356,7 @@ file of spectra (os.PathLike: always a file). A file's remittances beyond
 NoteWarning.
 )doc");
     m.def(
-        "read_spectra",
-        [](const Path& path)
-        {
-            const std::string p = path.string();
-            return ReadingFile(p, [&] { return ReadSpectraFile(p); });
-        },
+        "read_spectra", [](const Path& path) { return ReadSpectraFile(path.string()); },
         py::arg("path"), R"doc(
 Every spectrum of a CSV or CGATS (.sp, .cmf, .ti3, .cie) file, in file order.
 

@@ -68,7 +68,8 @@ def test_apply_errors_name_python_parameters(tmp_path):
     with pytest.raises(ValueError, match="threads must be 0"):
         bandlight.apply(tmp_path / "plate.exr", tmp_path / "o.exr", src="A", dst="D65",
                         threads=-1)
-    with pytest.raises(ValueError, match="no-such.exr"):
+    # A missing input is a file error, as docs/python.md says, not a bad value.
+    with pytest.raises(FileNotFoundError, match="no-such.exr"):
         bandlight.apply(tmp_path / "no-such.exr", tmp_path / "o.exr", src="A", dst="D65")
     assert not (tmp_path / "o.exr").exists()
 

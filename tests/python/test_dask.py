@@ -52,3 +52,19 @@ def test_a_frame_sequence_spread_over_the_workers(client, tmp_path):
     again = bandlight.apply(tmp_path / "p.####.exr", tmp_path / "d.####.exr", frames="1-8",
                             src="F11", dst="D65", client=client, skip_existing=True)
     assert again["skipped"] == 8 and again["frames"] == 0
+
+
+def test_a_frame_missing_on_a_worker_raises_as_it_would_here(client, tmp_path):
+    # The worker's FileNotFoundError is pickled back with its class, message,
+    # errno and filename: the local call's exception.
+    missing = tmp_path / "p.0002.exr"
+    with pytest.raises(FileNotFoundError) as remote:
+        bandlight.apply(tmp_path / "p.####.exr", tmp_path / "d.####.exr", frames="2",
+                        src="F11", dst="D65", client=client)
+    with pytest.raises(FileNotFoundError) as local:
+        bandlight.apply(tmp_path / "p.####.exr", tmp_path / "d.####.exr", frames="2",
+                        src="F11", dst="D65")
+    assert type(remote.value) is type(local.value)
+    assert str(remote.value) == str(local.value)
+    assert remote.value.filename == local.value.filename == str(missing)
+    assert remote.value.errno == local.value.errno

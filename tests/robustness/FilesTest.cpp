@@ -104,5 +104,34 @@ TEST_CASE("Paths that are not text files are refused before reading", "[robustne
     const std::string dir = kDir.substr(0, kDir.size() - 1);
     r = Bandlight("render '" + dir + "' -o '" + TempFile("dir.exr") + "'");
     CHECK(r.code == 2);
-    CHECK(r.err == "bandlight: " + dir + ": not a regular file (a scene file is a text file)\n");
+    CHECK(r.err == "bandlight: " + dir + ": is a directory, not a scene file\n");
+}
+
+TEST_CASE("An empty file name is named as such, not left as ': cannot ...'; directories as such",
+          "[robustness][files][cli]")
+{
+    Result r = Bandlight("apply '' '" + TempFile("empty_name.exr") + "' --from A --to D65");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '' (an empty path): cannot read image"));
+    r = Bandlight("spectral '' '" + TempFile("empty_name.exr") + "'");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '' (an empty path): cannot read image"));
+    r = Bandlight("package --out ''");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err,
+               Catch::StartsWith("bandlight: '' (an empty path): cannot create the directory"));
+    // Directories where a file belongs.
+    r = Bandlight("lut --from A --to D65 -o /tmp");
+    CHECK(r.code == 2);
+    CHECK(r.err == "bandlight: --out '/tmp' is a folder, not a file\n");
+    r = Bandlight("apply /tmp '" + TempFile("dir_in.exr") + "' --from A --to D65");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::StartsWith("bandlight: '/tmp' is a folder, not an image file"));
+    // A missing file keeps the message it has always had.
+    r = Bandlight("config --base '/nonexistent/config.ocio' --out '" + TempFile("empty_name") +
+                  "'");
+    CHECK(r.code == 2);
+    CHECK(r.err ==
+          "bandlight: /nonexistent/config.ocio: cannot read the config: Error could not "
+          "read '/nonexistent/config.ocio' OCIO profile.\n");
 }
