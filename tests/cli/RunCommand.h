@@ -63,6 +63,15 @@ inline Result Sh(const std::string& command)
     return r;
 }
 
+/// A file's bytes ("" when it cannot be read).
+inline std::string Slurp(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 /// Runs bandlight with the given arguments.
 inline Result Bandlight(const std::string& args)
 {

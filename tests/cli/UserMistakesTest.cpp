@@ -18,20 +18,13 @@ using Catch::Matchers::Contains;
 using test::Bandlight;
 using test::Result;
 using test::Sh;
+using test::Slurp;
 using test::TempPath;
 
 namespace fs = std::filesystem;
 
 namespace
 {
-std::string Slurp(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 /// A fresh folder for one test.
 std::string Folder(const std::string& name)
 {

@@ -20,14 +20,6 @@ using namespace bandlight::test;
 namespace
 {
 
-std::string Slurp(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 bool Exists(const std::string& path)
 {
     return ::access(path.c_str(), F_OK) == 0;
