@@ -82,10 +82,10 @@ void AddSpectralCommand(CLI::App& app)
     cmd->add_option("--plates", s.plates.plates,
                     "balanced: white-balance the result from the light it shows to the working "
                     "white; lit: do not")
-        ->check(CLI::IsMember({"lit", "balanced"}))
+        ->check(CLI::IsMember({"lit", "balanced"}, CLI::ignore_case))
         ->capture_default_str();
     cmd->add_option("--adaptation", s.plates.adaptation, "Balance with cat02 or bradford")
-        ->check(CLI::IsMember({"cat02", "bradford"}))
+        ->check(CLI::IsMember({"cat02", "bradford"}, CLI::ignore_case))
         ->capture_default_str();
     AddObserverOption(*cmd, s.observer);
     cmd->add_option("--channel", o->channels,
@@ -95,12 +95,12 @@ void AddSpectralCommand(CLI::App& app)
                     "CSV of 'channel,wavelength_nm' rows, or of sensitivities (a wavelength "
                     "column, one column per channel: each at its centroid)");
     cmd->add_option("--kind", s.kind, "What named channels hold: emissive or reflective")
-        ->check(CLI::IsMember({"emissive", "reflective"}))
+        ->check(CLI::IsMember({"emissive", "reflective"}, CLI::ignore_case))
         ->capture_default_str();
     cmd->add_option("--sampling", s.sampling,
                     "auto (as the layout says), points (values at the wavelengths) or buckets "
                     "(means over each channel's interval)")
-        ->check(CLI::IsMember({"auto", "points", "buckets"}))
+        ->check(CLI::IsMember({"auto", "points", "buckets"}, CLI::ignore_case))
         ->capture_default_str();
     AddFrameSetOptions(*cmd, r.files.frames, r.files.skipExisting, r.files.keepGoing, r.threads);
     cmd->callback([o] { RunSpectral(*o); });

@@ -140,7 +140,7 @@ void AddFrameSetOptions(CLI::App& app, std::string& frames, bool& skipExisting, 
 
 void FinishFrameRun(const std::string& verb, const jobs::FrameRun& run, bool counts)
 {
-    std::cout << verb << " " << run.frames << " frames";
+    std::cout << verb << " " << run.frames << (run.frames == 1 ? " frame" : " frames");
     if (counts)
     {
         std::cout << " (" << run.skipped << " skipped, " << run.failed.size() << " failed)";
@@ -148,10 +148,20 @@ void FinishFrameRun(const std::string& verb, const jobs::FrameRun& run, bool cou
     std::cout << " in " << Fixed(run.seconds, 2) << " s\n";
     if (!run.failed.empty())
     {
+        // Every failed frame by number (the first twenty), the first's reason.
+        std::string frames;
+        for (size_t i = 0; i < run.failed.size() && i < 20; ++i)
+        {
+            frames += (i ? ", " : "") + std::to_string(run.failed[i].frame);
+        }
+        if (run.failed.size() > 20)
+        {
+            frames += " and " + std::to_string(run.failed.size() - 20) + " more";
+        }
         throw Exception(std::to_string(run.failed.size()) + " of " +
                         std::to_string(run.frames + run.skipped + run.failed.size()) +
-                        " frames failed; the first, frame " + std::to_string(run.failed[0].frame) +
-                        ": " + run.failed[0].error);
+                        " frames failed (" + frames + "); the first, frame " +
+                        std::to_string(run.failed[0].frame) + ": " + run.failed[0].error);
     }
 }
 

@@ -2,6 +2,7 @@
 #include "bandlight/jobs/SpectralJob.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <mutex>
 
@@ -30,11 +31,22 @@ SpectralLayoutOptions SpectralOptions::layoutOptions() const
             o.namedWavelengths[name] = nm;
         }
     }
-    if (kind == "emissive")
+    // Names are case-insensitive, as everywhere.
+    const auto lower = [](std::string t)
+    {
+        for (char& ch : t)
+        {
+            ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        }
+        return t;
+    };
+    const std::string kindName = lower(kind);
+    const std::string samplingName = lower(sampling);
+    if (kindName == "emissive")
     {
         o.namedKind = SpectralKind::EMISSIVE;
     }
-    else if (kind == "reflective")
+    else if (kindName == "reflective")
     {
         o.namedKind = SpectralKind::REFLECTIVE;
     }
@@ -43,15 +55,15 @@ SpectralLayoutOptions SpectralOptions::layoutOptions() const
         throw ParameterError("{kind} must be emissive or reflective, got '" + OneLine(kind, 40) +
                              "'");
     }
-    if (sampling == "points")
+    if (samplingName == "points")
     {
         o.sampling = SpectralSampling::POINTS;
     }
-    else if (sampling == "buckets")
+    else if (samplingName == "buckets")
     {
         o.sampling = SpectralSampling::BUCKETS;
     }
-    else if (sampling != "auto")
+    else if (samplingName != "auto")
     {
         throw ParameterError("{sampling} must be auto, points or buckets, got '" +
                              OneLine(sampling, 40) + "'");

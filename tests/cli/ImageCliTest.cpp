@@ -331,7 +331,7 @@ TEST_CASE(
     r = Bandlight("apply " + in + " " + out +
                   " --from A --to D65 --frames 1001-1005x2,1006 --skip-existing");
     REQUIRE(r.code == 0);
-    CHECK_THAT(r.out, Contains("to 1 frames (3 skipped, 0 failed)"));
+    CHECK_THAT(r.out, Contains("to 1 frame (3 skipped, 0 failed)"));
     CHECK(Exists(Temp("farmout.1005.exr")));
     struct stat after
     {
@@ -348,14 +348,20 @@ TEST_CASE(
     {
         std::remove(Temp("farmout." + std::to_string(f) + ".exr").c_str());
     }
+    {
+        // A second bad frame: the message names both.
+        std::ofstream bad(Temp("farm.1005.exr"), std::ios::binary | std::ios::trunc);
+        bad << "not an image either";
+    }
     r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1006 --keep-going");
     CHECK(r.code == 2);
-    CHECK_THAT(r.out, Contains("to 5 frames (0 skipped, 1 failed)"));
-    CHECK_THAT(r.err, StartsWith("bandlight: 1 of 6 frames failed; the first, frame 1003: "));
+    CHECK_THAT(r.out, Contains("to 4 frames (0 skipped, 2 failed)"));
+    CHECK_THAT(r.err,
+               StartsWith("bandlight: 2 of 6 frames failed (1003, 1005); the first, frame 1003: "));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     for (int f = 1001; f <= 1006; ++f)
     {
-        CHECK(Exists(Temp("farmout." + std::to_string(f) + ".exr")) == (f != 1003));
+        CHECK(Exists(Temp("farmout." + std::to_string(f) + ".exr")) == (f != 1003 && f != 1005));
     }
     // Without --keep-going the chunk stops at the bad frame.
     r = Bandlight("apply " + in + " " + out + " --from A --to D65 --frames 1001-1006");

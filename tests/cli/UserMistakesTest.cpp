@@ -246,3 +246,15 @@ TEST_CASE("A PNG's code values are not written into an EXR read as linear", "[cl
     CHECK(Bandlight("apply '" + dir + "/chart.png' '" + dir + "/out.png' --from A --to D65").code ==
           0);
 }
+
+TEST_CASE("Names are case-insensitive in every option that takes one", "[cli][mistakes]")
+{
+    const std::string dir = Folder("case");
+    const std::string shot = SpectralShot(dir);
+    const Result r = Bandlight("spectral '" + shot + "' '" + dir +
+                               "/out.exr' --from F11 --to D65 --plates LIT --adaptation CAT02 "
+                               "--sampling Auto");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(fs::is_regular_file(dir + "/out.exr"));
+}
