@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -93,6 +95,13 @@ Light ResolveIlluminant(const std::string& nameOrFile, Reporter& reporter)
     }
     if (!FileExists(nameOrFile))
     {
+        // A name with a folder or a file extension is a file that is not
+        // there, not an unknown built-in name.
+        const std::string ext = std::filesystem::path(nameOrFile).extension().string();
+        if (nameOrFile.find('/') != std::string::npos || ext.size() > 1)
+        {
+            throw FileError(nameOrFile, ENOENT, "no such spectrum file");
+        }
         return {nameOrFile, BuiltinIlluminant(nameOrFile)};  // throws, listing the choices
     }
     return IlluminantFromFile(nameOrFile, reporter);

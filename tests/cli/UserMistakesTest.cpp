@@ -258,3 +258,12 @@ TEST_CASE("Names are case-insensitive in every option that takes one", "[cli][mi
     CHECK(r.code == 0);
     CHECK(fs::is_regular_file(dir + "/out.exr"));
 }
+
+TEST_CASE("A missing spectrum file is called missing, not an unknown light", "[cli][mistakes]")
+{
+    const std::string dir = Folder("missing_light");
+    CheckOneLine(Bandlight("xyz --illuminant '" + dir + "/missing.csv'"), "no such spectrum file");
+    CheckOneLine(Bandlight("xyz --illuminant lamp.csv"), "lamp.csv: no such spectrum file");
+    // A name that is neither lists the built-in lights.
+    CheckOneLine(Bandlight("xyz --illuminant D66x"), "unknown illuminant");
+}

@@ -88,11 +88,14 @@ def test_missing_and_unreadable_files_are_os_errors(tmp_path):
     assert e.value.filename == str(tmp_path)
     assert str(e.value) == f"{tmp_path}: is a directory, not a spectrum file"
     assert str(e.value) == cli_error("xyz", "--illuminant", "A", "--reflectance", tmp_path)
-    # As --illuminant reads a str: an unknown name (it may be a typo) is a
-    # ValueError listing the built-in names, as the command says.
-    with pytest.raises(ValueError) as e:
+    # As --illuminant reads a str: a name with a folder or an extension is a
+    # file that is not there, as the command says; a bare unknown name (it
+    # may be a typo) is a ValueError listing the built-in names.
+    with pytest.raises(FileNotFoundError) as e:
         bandlight.illuminant(str(missing))
     assert str(e.value) == cli_error("xyz", "--illuminant", missing)
+    with pytest.raises(ValueError, match="unknown illuminant 'D66x'"):
+        bandlight.illuminant("D66x")
 
 
 def test_os_errors_keep_the_message_alone(tmp_path):
