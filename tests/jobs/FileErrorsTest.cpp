@@ -16,6 +16,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "spectral/FileErrorCheck.h"
+
 #include "cli/RunCommand.h"
 #include "bandlight/jobs/ApplyJob.h"
 #include "bandlight/jobs/ImageApply.h"
@@ -62,24 +64,7 @@ jobs::ApplyRequest Relight(const std::string& in, const std::string& out)
     return r;
 }
 
-/// The FileError `fn` throws (FAILs when it throws none, or another type).
-FileError CaughtFileError(const std::function<void()>& fn)
-{
-    try
-    {
-        fn();
-    }
-    catch (const FileError& e)
-    {
-        return e;
-    }
-    catch (const std::exception& e)
-    {
-        FAIL("not a FileError: " << e.what());
-    }
-    FAIL("nothing thrown");
-    throw std::logic_error("unreachable");
-}
+using test::CaughtFileError;
 
 /// The message of the Exception `fn` throws, FAILing when it is a FileError.
 std::string CaughtContentError(const std::function<void()>& fn)

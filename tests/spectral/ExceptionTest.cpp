@@ -18,6 +18,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "FileErrorCheck.h"
+
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/CameraFile.h"
 #include "bandlight/spectral/SpectrumIO.h"
@@ -44,24 +46,7 @@ void WriteText(const std::string& path, const std::string& text)
     std::ofstream(path, std::ios::binary) << text;
 }
 
-/// The FileError `fn` throws (FAILs when it throws none, or another type).
-FileError CaughtFileError(const std::function<void()>& fn)
-{
-    try
-    {
-        fn();
-    }
-    catch (const FileError& e)
-    {
-        return e;
-    }
-    catch (const std::exception& e)
-    {
-        FAIL("not a FileError: " << e.what());
-    }
-    FAIL("nothing thrown");
-    throw std::logic_error("unreachable");
-}
+using test::CaughtFileError;
 
 /// A folder this process cannot create files in, with EACCES: a folder
 /// without write permission, or for root (whom permissions do not stop)
