@@ -9,25 +9,37 @@ namespace bandlight
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
+
+// A stimulus coarser than the matching functions' tables, brought onto
+// their grid. Summed at its own samples, a lamp given every 100 nm would be
+// weighed at five wavelengths of the matching functions (equal energy came
+// out at x 0.365), and one given at steps wider than the visible range at
+// none. It is integrated through its linear interpolant on the tables' grid
+// instead, the one resampler every spectrum goes through
+// (Spectrum::resampled), as remittances are: exact for a spectrum that is
+// linear between its samples, equal energy included. A stimulus as fine as
+// the tables or finer is returned as it is.
+Spectrum OnTableGrid(const Spectrum& stimulus, const MatchingFunctions& cmf)
+{
+    const double table = cmf.x.step();
+    if (!(stimulus.step() > table * (1.0 + 1e-9)) || stimulus.size() < 2)
+    {
+        return stimulus;
+    }
+    const double first =
+        cmf.x.start() + std::ceil((stimulus.start() - cmf.x.start()) / table - 1e-9) * table;
+    const size_t count = size_t(std::floor((stimulus.end() - first) / table + 1e-9)) + 1;
+    return stimulus.resampled(first, table, count);
 }
+
+}  // namespace
 
 Vec3 IntegrateXyz(const Spectrum& stimulus, Observer observer)
 {
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
-    const double table = cmf.x.step();
-    if (stimulus.step() > table * (1.0 + 1e-9) && stimulus.size() > 1)
+    if (stimulus.step() > cmf.x.step() * (1.0 + 1e-9) && stimulus.size() > 1)
     {
-        // Coarser than the tables: summed at its own samples, a lamp given
-        // every 100 nm would be weighed at five wavelengths of the matching
-        // functions (equal energy came out at x 0.365). It is integrated
-        // through its linear interpolant on the tables' grid instead, the
-        // one resampler every spectrum goes through (Spectrum::resampled),
-        // as remittances are: exact for a spectrum that is linear between
-        // its samples, equal energy included.
-        const double first =
-            cmf.x.start() + std::ceil((stimulus.start() - cmf.x.start()) / table - 1e-9) * table;
-        const size_t count = size_t(std::floor((stimulus.end() - first) / table + 1e-9)) + 1;
-        return IntegrateXyz(stimulus.resampled(first, table, count), observer);
+        return IntegrateXyz(OnTableGrid(stimulus, cmf), observer);
     }
     Vec3 xyz = Vec3::Zero();
     const double offset = (stimulus.start() - cmf.x.start()) / cmf.x.step();
@@ -63,10 +75,14 @@ Vec3 IntegrateXyz(const LineSpectrum& lines, Observer observer)
 
 Vec3 SurfaceXyz(const Spectrum& reflectance, const Spectrum& illuminant, Observer observer)
 {
-    const Spectrum r = reflectance.extended(illuminant.start(), illuminant.end());
-    Spectrum product = illuminant;
+    // A light coarser than the tables is brought onto their grid before the
+    // surface multiplies it, so that light and surface are weighed where the
+    // matching functions are, as the light's own white is.
+    const Spectrum light = OnTableGrid(illuminant, GetMatchingFunctions(observer));
+    const Spectrum r = reflectance.extended(light.start(), light.end());
+    Spectrum product = light;
     product *= r;
-    const Vec3 white = IntegrateXyz(illuminant, observer);
+    const Vec3 white = IntegrateXyz(light, observer);
     return IntegrateXyz(product, observer) * (100.0 / white.y());
 }
 
@@ -86,16 +102,21 @@ Vec3 EqualEnergyNormalisedXyz(const Spectrum& stimulus, Observer observer)
 }
 
 XyzIntegrator::XyzIntegrator(const Spectrum& illuminant, Observer observer)
-    : m_wx(illuminant), m_wy(illuminant), m_wz(illuminant)
+    : XyzIntegrator(OnTableGrid(illuminant, GetMatchingFunctions(observer)),
+                    GetMatchingFunctions(observer))
 {
-    const MatchingFunctions& cmf = GetMatchingFunctions(observer);
+}
+
+XyzIntegrator::XyzIntegrator(const Spectrum& light, const MatchingFunctions& cmf)
+    : m_wx(light), m_wy(light), m_wz(light)
+{
     m_wx *= cmf.x;
     m_wy *= cmf.y;
     m_wz *= cmf.z;
     const double k = 100.0 / m_wy.sum();
-    m_wx *= k * illuminant.step();
-    m_wy *= k * illuminant.step();
-    m_wz *= k * illuminant.step();
+    m_wx *= k * light.step();
+    m_wy *= k * light.step();
+    m_wz *= k * light.step();
 }
 
 Vec3 XyzIntegrator::integrate(const double* values) const noexcept

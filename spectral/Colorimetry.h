@@ -38,6 +38,8 @@ Vec3 EqualEnergyNormalisedXyz(const Spectrum& stimulus, Observer observer);
 /// Precomputed weights w_k(λ) = k · S(λ) · cmf_k(λ) · Δλ for one illuminant
 /// and observer, so a surface's XYZ is three dot products: the fast path of
 /// SurfaceXyz (same result to rounding) for many remittances on one grid.
+/// An illuminant coarser than the matching functions' tables is brought onto
+/// their grid first, as IntegrateXyz does, so grid() is then the tables'.
 class XyzIntegrator
 {
 public:
@@ -53,6 +55,9 @@ public:
     const Spectrum& grid() const noexcept { return m_wx; }
 
 private:
+    /// `light` already on a grid no coarser than the tables.
+    XyzIntegrator(const Spectrum& light, const MatchingFunctions& cmf);
+
     Spectrum m_wx, m_wy, m_wz;
 };
 

@@ -187,6 +187,17 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
                         std::to_string(kFewestSamples) + " (every 100 nm over 380–780 nm at "
                         "most; the CIE tabulates lights every 5 nm)");
     }
+    // And no wider apart than those five: samples thousands of nm apart say
+    // nothing of the light where the eye sees, however many rows there are.
+    constexpr double kWidestStepNm = 100.0;
+    if (!(illuminant.step() <= kWidestStepNm * (1.0 + 1e-9)))
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%g", illuminant.step());
+        throw Exception(source + ": an illuminant sampled every " + buf +
+                        " nm cannot be integrated honestly: give samples 100 nm apart at most "
+                        "(the CIE tabulates lights every 5 nm)");
+    }
     double peak = 0.0;
     for (const double v : illuminant.values())
     {

@@ -144,4 +144,42 @@ TEST_CASE("A light of fewer than five samples is refused, not integrated", "[spe
                       Catch::Matchers::Contains("two.csv: an illuminant of 2 samples"));
     // Five rows 100 nm apart are enough (and integrate to E, above).
     CHECK(UsableIlluminant(Spectrum::Constant(380.0, 100.0, 5, 1.0), "five.csv").size() == 5);
+    // Samples 5580 nm apart (a fuzzed file: 5, 5585 and 59560 nm) are many
+    // rows and no light: none of them falls where the eye sees.
+    CHECK_THROWS_WITH(UsableIlluminant(Spectrum(5.0, 5580.0, {0.0, 6.0, 0.0, 0.0, 0.0, 0.0}),
+                                       "wide.csv"),
+                      Catch::Contains("wide.csv") && Catch::Contains("every 5580 nm"));
+}
+
+TEST_CASE("Surfaces under a coarse light are integrated on the tables' grid, as its white is",
+          "[spectral][coarse]")
+{
+    // The fast path (XyzIntegrator) must weigh a light given every 100 nm as
+    // IntegrateXyz does: through its linear interpolant on the 5 nm grid.
+    // Summed at its own samples the white would be wrong (equal energy at
+    // x 0.365), and a light wider apart than the visible range has no sample
+    // where the eye sees at all.
+    const Spectrum coarse = Spectrum::Constant(380.0, 100.0, 5, 1.0);
+    const XyzIntegrator integrate(coarse, Observer::CIE1931_2DEG);
+    CHECK(integrate.grid().step() == Approx(5.0));
+    const Vec3 white = integrate(Spectrum::Constant(380.0, 5.0, 81, 1.0));
+    const Vec3 expected = IlluminantWhiteXyz(coarse, Observer::CIE1931_2DEG);
+    CHECK(white.x() == Approx(expected.x()).epsilon(1e-12));
+    CHECK(white.y() == Approx(100.0).epsilon(1e-12));
+    CHECK(white.z() == Approx(expected.z()).epsilon(1e-12));
+    // Equal energy over 380-780 nm is linear between its samples: the white
+    // is that of equal energy on the 5 nm grid.
+    const Vec3 flat = IlluminantWhiteXyz(Spectrum::Constant(380.0, 5.0, 81, 1.0),
+                                         Observer::CIE1931_2DEG);
+    CHECK(white.x() == Approx(flat.x()).epsilon(1e-9));
+    CHECK(white.z() == Approx(flat.z()).epsilon(1e-9));
+    // A surface on any grid agrees with SurfaceXyz under the same light.
+    const Spectrum ramp(400.0, 10.0, std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7,
+                                                          0.8, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4,
+                                                          0.3, 0.2, 0.1, 0.2, 0.3, 0.4, 0.5,
+                                                          0.6, 0.7, 0.8, 0.9, 0.8, 0.7, 0.6,
+                                                          0.5, 0.4, 0.3});
+    const Vec3 fast = integrate(ramp);
+    const Vec3 exact = SurfaceXyz(ramp, coarse, Observer::CIE1931_2DEG);
+    CHECK((fast - exact).norm() < 1e-9 * exact.norm());
 }
