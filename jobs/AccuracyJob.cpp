@@ -409,6 +409,10 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     }
     result.costAllThreads = CostAllThreads(result.cost);
 
+    // Every output of the run (heat maps, JSON, plot) is one set, committed
+    // after all of the work: a failure anywhere leaves every previous output
+    // as it was.
+    OutputSet outputs;
     if (!r.heatmaps.empty())
     {
         // The maps are drawn for the default plate convention when both are
@@ -418,11 +422,14 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         {
             imageOptions.plates.plates = defaults::PLATES;
         }
-        for (const std::string& image : r.images)
+        const std::vector<std::string> stems = HeatmapStems(r.images);
+        for (size_t i = 0; i < r.images.size(); ++i)
         {
+            const std::string& image = r.images[i];
             reporter.progress("accuracy: heat maps of " + image);
-            for (HeatmapSummary& h :
-                 WriteAccuracyHeatmaps(image, imageOptions, options.methods, r.heatmaps, reporter))
+            for (HeatmapSummary& h : WriteAccuracyHeatmaps(image, imageOptions, options.methods,
+                                                           r.heatmaps, stems[i], outputs,
+                                                           reporter))
             {
                 result.written.push_back(h.exr);
                 result.written.push_back(h.png);
@@ -431,8 +438,6 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         }
     }
 
-    // The JSON file and the plot are one set of outputs.
-    OutputSet outputs;
     if (!r.json.empty())
     {
         const std::string document = AccuracyDocument(result);

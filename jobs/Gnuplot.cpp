@@ -161,8 +161,8 @@ void RunGnuplot(const std::string& script, const std::string& data, const std::s
     // standard output (redirected into the temporary file), the data are a
     // datablock inside the script, and the script and gnuplot's messages
     // live beside the image under AtomicFile's registered temporary names.
-    AtomicFile scriptFile(image.tempPath() + ".gp");
-    AtomicFile errFile(image.tempPath() + ".err");
+    AtomicFile scriptFile(image.tempPath() + ".gp", AtomicFile::Scratch{});
+    AtomicFile errFile(image.tempPath() + ".err", AtomicFile::Scratch{});
     scriptFile.stream() << (svg ? "set terminal svg size 1000,650 dynamic font 'Sans,12'\n"
                                 : "set terminal pngcairo size 1000,650 font 'Sans,11'\n")
                         << "set termoption noenhanced\n"

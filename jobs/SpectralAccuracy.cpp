@@ -165,7 +165,8 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
 
 std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const SpectralOptions& o,
                                                   const std::vector<std::string>& methods,
-                                                  const std::string& dir, Reporter& reporter)
+                                                  const std::string& dir, const std::string& stem,
+                                                  OutputSet& outputs, Reporter& reporter)
 {
     const SpectralImage image = ReadSpectralImage(path, o);
     RequireLights(image, o, true);
@@ -225,7 +226,6 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
         lit[p] = any ? 1 : 0;
     }
     std::filesystem::create_directories(dir);
-    OutputSet outputs;
     std::vector<HeatmapSummary> summaries;
     for (const std::string& name : methods)
     {
@@ -259,7 +259,7 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
         h.mean = summary.mean;
         h.p95 = summary.p95;
         h.max = summary.max;
-        const std::string base = dir + "/" + FileStem(path) + "_" + Safe(name) + "_dE00";
+        const std::string base = dir + "/" + stem + "_" + Safe(name) + "_dE00";
         h.exr = base + ".exr";
         h.png = base + ".png";
         std::ostringstream title;
@@ -273,8 +273,42 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
             outputs);
         summaries.push_back(h);
     }
-    outputs.commit();
     return summaries;
+}
+
+std::vector<std::string> HeatmapStems(const std::vector<std::string>& images)
+{
+    const auto folderOf = [](const std::string& path)
+    {
+        const std::filesystem::path parent =
+            std::filesystem::absolute(std::filesystem::path(path)).lexically_normal().parent_path();
+        const std::string name = parent.filename().string();
+        return Safe(name.empty() ? std::string("root") : name);
+    };
+    std::vector<std::string> stems;
+    for (const std::string& image : images)
+    {
+        stems.push_back(FileStem(image));
+    }
+    const auto shared = [](const std::vector<std::string>& names, size_t i)
+    { return std::count(names.begin(), names.end(), names[i]) > 1; };
+    std::vector<std::string> named = stems;
+    for (size_t i = 0; i < images.size(); ++i)
+    {
+        if (shared(stems, i))
+        {
+            named[i] = folderOf(images[i]) + "_" + stems[i];
+        }
+    }
+    std::vector<std::string> result = named;
+    for (size_t i = 0; i < images.size(); ++i)
+    {
+        if (shared(named, i))
+        {
+            result[i] = named[i] + "_" + std::to_string(i + 1);
+        }
+    }
+    return result;
 }
 
 }  // namespace bandlight::jobs

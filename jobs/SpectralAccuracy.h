@@ -10,6 +10,7 @@
 
 #include "bandlight/jobs/Reporter.h"
 #include "bandlight/jobs/SpectralJob.h"
+#include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/transforms/SurfaceRenderer.h"
 
 namespace bandlight::jobs
@@ -47,12 +48,20 @@ struct HeatmapSummary
 /// `options.to`, in CIEDE2000 (L*a*b* relative to the white the plates
 /// say: `to`'s for lit plates, the working white for balanced ones; emissive
 /// images scaled as ReflectanceSetFromSpectralImage scales them). Writes
-/// DIR/<image stem>_<method>_dE00.exr and .png (0 to 10 ΔE00, its scale
-/// beside), all as one set of outputs.
+/// DIR/<stem>_<method>_dE00.exr and .png (0 to 10 ΔE00, its scale beside)
+/// into `outputs`, the run's one set of outputs, which the caller commits
+/// after all of its work (HeatmapStems gives each image a distinct stem).
 std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path,
                                                   const SpectralOptions& options,
                                                   const std::vector<std::string>& methods,
-                                                  const std::string& dir,
+                                                  const std::string& dir, const std::string& stem,
+                                                  OutputSet& outputs,
                                                   Reporter& reporter = SilentReporter());
+
+/// The stems of the heat maps of `images`, distinct: each image's file stem,
+/// with its folder's name before it (and then its place in the list) where
+/// two images share a stem, so that shotA/beauty.exr and shotB/beauty.exr
+/// give shotA_beauty_… and shotB_beauty_… and neither map replaces the other.
+std::vector<std::string> HeatmapStems(const std::vector<std::string>& images);
 
 }  // namespace bandlight::jobs

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/spectral/AtomicFile.h"
 
+#include <dirent.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -63,14 +66,67 @@ extern "C" void RemoveTempsAndReraise(int sig)
     std::raise(sig);
 }
 
-std::string TempName(const std::string& path)
+/// "dir/.name.tmp-": the start of every temporary name of `path`'s outputs.
+/// Hidden, and the output's extension is not the end of the name, so a
+/// delivery script's `*.exr` never picks a temporary file up.
+std::string TempPrefix(const std::string& path)
 {
     const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string stem = hasExt ? path.substr(0, dot) : path;
-    const std::string ext = hasExt ? path.substr(dot) : "";
-    return stem + ".tmp-" + std::to_string(::getpid()) + ext;
+    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    return dir + "." + name + ".tmp-";
+}
+
+std::string TempName(const std::string& path)
+{
+    return TempPrefix(path) + std::to_string(::getpid());
+}
+
+/// Removes the temporary files a process that is gone left for `path`
+/// (killed by SIGKILL, or a Python or Dask worker killed without our
+/// handlers): ".name.tmp-<pid>" and names that continue it (".gp", ".err",
+/// ".previous"), when no process <pid> exists. A live process's files, and
+/// anything not of this form, are left alone.
+void RemoveStaleTemporaries(const std::string& path)
+{
+    const std::string prefix = TempPrefix(path);
+    const size_t slash = prefix.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : prefix.substr(0, slash);
+    const std::string start = slash == std::string::npos ? prefix : prefix.substr(slash + 1);
+    DIR* folder = ::opendir(dir.empty() ? "/" : dir.c_str());
+    if (!folder)
+    {
+        return;
+    }
+    std::vector<std::string> stale;
+    while (const dirent* entry = ::readdir(folder))
+    {
+        const std::string name = entry->d_name;
+        if (name.compare(0, start.size(), start) != 0)
+        {
+            continue;
+        }
+        size_t end = start.size();
+        while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end])))
+        {
+            ++end;
+        }
+        if (end == start.size() || end - start.size() > 9 ||
+            (end < name.size() && name[end] != '.'))
+        {
+            continue;
+        }
+        const long pid = std::strtol(name.c_str() + start.size(), nullptr, 10);
+        if (pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH)
+        {
+            stale.push_back((slash == std::string::npos ? "" : dir + "/") + name);
+        }
+    }
+    ::closedir(folder);
+    for (const std::string& file : stale)
+    {
+        ::unlink(file.c_str());
+    }
 }
 }  // namespace
 
@@ -83,6 +139,7 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_temp(TempN
         throw FileError(m_path, ENOENT,
                         std::string("cannot create output file (") + std::strerror(ENOENT) + ")");
     }
+    RemoveStaleTemporaries(m_path);
     m_slot = Register(m_temp);
     errno = 0;
     m_stream.open(m_temp, std::ios::binary | std::ios::trunc);
@@ -92,6 +149,21 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_temp(TempN
         Unregister(m_slot);
         throw FileError(m_path, error,
                         std::string("cannot create output file (") + std::strerror(error) + ")");
+    }
+}
+
+AtomicFile::AtomicFile(std::string path, Scratch) : m_path(std::move(path)), m_temp(m_path)
+{
+    m_scratch = true;
+    m_slot = Register(m_temp);
+    errno = 0;
+    m_stream.open(m_temp, std::ios::binary | std::ios::trunc);
+    if (!m_stream)
+    {
+        const int error = errno;
+        Unregister(m_slot);
+        throw FileError(m_path, error,
+                        std::string("cannot create a working file (") + std::strerror(error) + ")");
     }
 }
 

@@ -20,12 +20,24 @@ public:
     /// Throws FileError when the temporary file cannot be created (its
     /// folder is missing or not writable, or `path` is empty).
     explicit AtomicFile(std::string path);
+    /// A working file of a writer (a script, a log) at exactly `path`,
+    /// registered for removal on interrupt like a temporary file and removed
+    /// when destroyed; never committed. Name it after an output's tempPath()
+    /// (tempPath() + ".gp") so that a later run clears it with the output's
+    /// stale temporaries.
+    struct Scratch
+    {
+    };
+    AtomicFile(std::string path, Scratch);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
 
-    /// The temporary path, for writers that want a file name (OIIO); keeps
-    /// the destination's extension so format detection still works.
+    /// The temporary path, for writers that want a file name: "dir/.name.tmp-<pid>"
+    /// for "dir/name", hidden and not ending in the output's extension (a
+    /// writer that picks a format by name is given the destination's name
+    /// for that). Creating an AtomicFile removes the temporary files that a
+    /// process that is gone left for the same destination.
     const std::string& tempPath() const noexcept { return m_temp; }
     /// A stream on the temporary file.
     std::ofstream& stream() noexcept { return m_stream; }
@@ -48,6 +60,7 @@ private:
     std::string m_temp;
     std::ofstream m_stream;
     bool m_committed = false;
+    bool m_scratch = false;
     int m_slot = -1;  ///< registration for RemoveTemporaryFilesOnInterrupt()
 };
 
@@ -88,8 +101,9 @@ private:
 /// Installs SIGINT, SIGTERM and SIGHUP handlers that remove the temporary
 /// files of every AtomicFile not yet committed, then end the process with
 /// the signal's default action. The previous outputs stay as they were.
-/// (SIGKILL cannot be caught: it leaves a "<stem>.tmp-<pid><ext>" beside
-/// the untouched output.) Call once, early in main().
+/// (SIGKILL cannot be caught: it leaves a hidden ".<name>.tmp-<pid>" beside
+/// the untouched output, which the next run writing that output removes.)
+/// Call once, early in main().
 void RemoveTemporaryFilesOnInterrupt();
 
 /// Removes the temporary files of every AtomicFile not yet committed

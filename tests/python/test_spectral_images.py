@@ -7,6 +7,7 @@ files refused with one line and nothing written."""
 
 import csv
 import json
+import shutil
 
 import numpy as np
 import OpenImageIO as oiio
@@ -290,6 +291,30 @@ def test_accuracy_heatmaps_of_a_render(tmp_path):
     assert none.mean() > 3 * brad.mean() > 0
     # The rows name the file.
     assert str(tmp_path / "spec.exr") in p.stdout
+
+
+def test_accuracy_heatmaps_are_one_set_with_the_json_and_never_share_a_name(tmp_path):
+    # Two renders named alike in two shot folders: each keeps its own maps.
+    for shot in ("shotA", "shotB"):
+        (tmp_path / shot).mkdir()
+    run_cli("render", SCENES / "tcs_spectral_F11.yaml", "--spectra", "-o",
+            tmp_path / "shotA" / "beauty.exr")
+    shutil.copy(tmp_path / "shotA" / "beauty.exr", tmp_path / "shotB" / "beauty.exr")
+    common = ["--from", "F11", "--to", "D65", "--methods", "bradford", "--ideal-only",
+              "--no-cost", "--plates", "lit"]
+    maps = tmp_path / "maps"
+    run_cli("accuracy", "--image", tmp_path / "shotA" / "beauty.exr", "--image",
+            tmp_path / "shotB" / "beauty.exr", "--heatmaps", maps, *common)
+    assert sorted(p.name for p in maps.iterdir()) == [
+        "shotA_beauty_bradford_dE00.exr", "shotA_beauty_bradford_dE00.png",
+        "shotB_beauty_bradford_dE00.exr", "shotB_beauty_bradford_dE00.png"]
+    before = {p.name: p.read_bytes() for p in maps.iterdir()}
+    # A run that fails on its JSON (into a folder that is not there) is
+    # refused before any work, and the earlier maps are as they were.
+    p = run_cli("accuracy", "--image", tmp_path / "shotA" / "beauty.exr", "--heatmaps", maps,
+                "--json", tmp_path / "missing" / "x.json", *common, check=False)
+    assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
+    assert {p.name: p.read_bytes() for p in maps.iterdir()} == before
 
 
 def test_an_emissive_image_lit_by_a_known_light_is_balanced_from_it(tmp_path):

@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -62,8 +64,9 @@ Interrupted RenderAndInterrupt(const std::string& scene, const std::string& out,
                 "--threads", "2", static_cast<char*>(nullptr));
         ::_exit(127);
     }
+    const size_t slash = out.find_last_of('/');
     const std::string temp =
-        out.substr(0, out.size() - 4) + ".tmp-" + std::to_string(pid) + ".exr";
+        out.substr(0, slash + 1) + "." + out.substr(slash + 1) + ".tmp-" + std::to_string(pid);
     Interrupted r;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     int status = 0;
@@ -138,4 +141,88 @@ TEST_CASE("A failing run leaves the previous outputs intact", "[robustness][atom
     r = Bandlight("lut --from A --to D65 --method bradford --format clf -o /proc/bandlight.clf");
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::StartsWith("bandlight: /proc/bandlight.clf: cannot create output file"));
+}
+
+TEST_CASE("apply killed by SIGKILL over a sequence resumes with --skip-existing, exactly",
+          "[robustness][atomic][farm]")
+{
+    // A farm task killed mid-write (SIGKILL: no handler runs) and re-queued
+    // with --skip-existing: the folder must hold exactly the outputs,
+    // pixel-exact, and no temporary file.
+    const std::string dir = TempFile("killed_sequence");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const int width = 1600, height = 1200, frames = 6;
+    for (int f = 1; f <= frames; ++f)
+    {
+        std::vector<float> pixels(size_t(width) * height * 3);
+        for (size_t i = 0; i < pixels.size(); ++i)
+        {
+            pixels[i] = float((i * 7919 + size_t(f) * 104729) % 1000) / 400.0f;
+        }
+        WriteFloatImage(dir + "/in.100" + std::to_string(f) + ".exr", pixels, width, height, 3);
+    }
+    const std::string in = dir + "/in.####.exr", out = dir + "/out.####.exr";
+    const std::string ref = dir + "/ref";
+    std::filesystem::create_directories(ref);
+    const std::string options = " --frames 1001-100" + std::to_string(frames) +
+                                " --from A --to D65 --method rootpoly --threads 1";
+    REQUIRE(Bandlight("apply '" + in + "' '" + ref + "/out.####.exr'" + options).code == 0);
+
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0)
+    {
+        ::execl(BANDLIGHT_EXE, BANDLIGHT_EXE, "apply", in.c_str(), out.c_str(), "--frames",
+                ("1001-100" + std::to_string(frames)).c_str(), "--from", "A", "--to", "D65",
+                "--method", "rootpoly", "--threads", "1", static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    // Kill it while it writes the third frame.
+    const std::string temp = dir + "/.out.1003.exr.tmp-" + std::to_string(pid);
+    bool killed = false;
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+        if (Exists(temp))
+        {
+            ::kill(pid, SIGKILL);
+            killed = true;
+            break;
+        }
+        if (::waitpid(pid, &status, WNOHANG) == pid)
+        {
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    REQUIRE(killed);
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    REQUIRE(WIFSIGNALED(status));
+    CHECK(Exists(temp));  // SIGKILL cannot be caught: the temporary stays ...
+
+    const Result r = Bandlight("apply '" + in + "' '" + out + "'" + options + " --skip-existing");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_FALSE(Exists(temp));  // ... until the rerun clears it
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+    {
+        names.insert(entry.path().filename().string());
+    }
+    std::set<std::string> expected = {"ref"};
+    for (int f = 1; f <= frames; ++f)
+    {
+        expected.insert("in.100" + std::to_string(f) + ".exr");
+        expected.insert("out.100" + std::to_string(f) + ".exr");
+    }
+    CHECK(names == expected);
+    for (int f = 1; f <= frames; ++f)
+    {
+        const std::string name = "/out.100" + std::to_string(f) + ".exr";
+        INFO(name);
+        CHECK(ReadFloatImage(dir + name, width, height, 3) ==
+              ReadFloatImage(ref + name, width, height, 3));
+    }
 }
