@@ -175,11 +175,41 @@ void IntegrateSpectralPixels(const SpectralConversion& conversion, const float* 
             w[c * n + j] = float(conversion.weights(Eigen::Index(c), Eigen::Index(first + j)));
         }
     }
+    // Channels inside that range that are not spectral samples (an AOV
+    // named between two bands, "band_07x" beside "band_00".."band_15") have
+    // weight 0, but 0 × NaN is NaN: where there are any, each block of
+    // pixels is copied with those channels zeroed before its dot products,
+    // so that only spectral samples ever enter them.
+    std::vector<char> spectral(n, 0);
+    for (const int c : conversion.layout.channels)
+    {
+        spectral[size_t(c) - first] = 1;
+    }
+    const bool gaps = std::find(spectral.begin(), spectral.end(), 0) != spectral.end();
     ParallelFor(count, threads,
                 [&](size_t a, size_t b)
                 {
-                    SpectralDot(w.data(), n, pixels + a * size_t(channels) + first, b - a,
-                                size_t(channels), rgb + 3 * a, 3);
+                    if (!gaps)
+                    {
+                        SpectralDot(w.data(), n, pixels + a * size_t(channels) + first, b - a,
+                                    size_t(channels), rgb + 3 * a, 3);
+                        return;
+                    }
+                    constexpr size_t kBlock = 1024;
+                    std::vector<float> block(kBlock * n);
+                    for (size_t p0 = a; p0 < b; p0 += kBlock)
+                    {
+                        const size_t m = std::min(kBlock, b - p0);
+                        for (size_t p = 0; p < m; ++p)
+                        {
+                            const float* from = pixels + (p0 + p) * size_t(channels) + first;
+                            for (size_t j = 0; j < n; ++j)
+                            {
+                                block[p * n + j] = spectral[j] ? from[j] : 0.0f;
+                            }
+                        }
+                        SpectralDot(w.data(), n, block.data(), m, n, rgb + 3 * p0, 3);
+                    }
                 });
 }
 

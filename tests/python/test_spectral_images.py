@@ -174,6 +174,35 @@ def test_named_channels_with_a_csv_of_wavelengths(tmp_path):
     np.testing.assert_array_equal(spectra, values[..., order])
 
 
+def test_channels_that_are_not_samples_never_enter_the_integration(tmp_path):
+    # band_07x sorts between band_07 and band_08; NaN there once made every
+    # pixel NaN (0 x NaN in a dot product over the whole channel range).
+    names = [f"band_{i:02d}" for i in range(16)]
+    wavelengths = {n: 400.0 + 20.0 * i for i, n in enumerate(names)}
+    with open(tmp_path / "bands.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["channel", "wavelength_nm"])
+        w.writerows(wavelengths.items())
+    values = np.random.default_rng(7).uniform(0.0, 1.0, (4, 4, 16)).astype(np.float32)
+    write_exr(tmp_path / "clean.exr", values, names)
+    extra = np.full((4, 4, 2), np.nan, dtype=np.float32)
+    extra[1:, :, 1] = 0.5  # alpha: NaN in the first row only
+    write_exr(tmp_path / "dirty.exr", np.concatenate([values, extra], axis=-1),
+              names + ["band_07x", "A"])
+    for name in ("clean", "dirty"):
+        run_cli("spectral", tmp_path / f"{name}.exr", tmp_path / f"{name}_rgb.exr",
+                "--channel-wavelengths", tmp_path / "bands.csv")
+    clean = read(tmp_path / "clean_rgb.exr")[0]
+    dirty, channels, _ = read(tmp_path / "dirty_rgb.exr")
+    assert channels == ("R", "G", "B", "A")
+    # (the same sums, in another order of SIMD lanes: to float rounding)
+    np.testing.assert_allclose(dirty[..., :3], clean, rtol=1e-6, atol=1e-7)
+    assert np.isfinite(dirty[..., :3]).all() and np.abs(clean).max() > 0.01
+    # Alpha is carried as it is, as apply carries it: NaN included.
+    assert np.isnan(dirty[0, :, 3]).all()
+    np.testing.assert_array_equal(dirty[1:, :, 3], 0.5)
+
+
 def test_render_spectra_round_trip_and_relight(tmp_path):
     scene = SCENES / "materials_A.yaml"
     run_cli("render", scene, "--mode", "spectral", "-o", tmp_path / "rgb.exr")
