@@ -159,6 +159,26 @@ void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
     }
 }
 
+void CheckIntegratedPixels(const std::string& file, const float* rgb, size_t count, int width)
+{
+    // Finite spectra whose integral leaves float's range (values near
+    // 3.4e38) would be written as Inf: refused, naming the pixel, as a NaN
+    // in a spectrum is.
+    for (size_t p = 0; p < count; ++p)
+    {
+        if (!std::isfinite(rgb[3 * p]) || !std::isfinite(rgb[3 * p + 1]) ||
+            !std::isfinite(rgb[3 * p + 2]))
+        {
+            const std::string where = width > 0 ? "(" + std::to_string(p % size_t(width)) + ", " +
+                                                      std::to_string(p / size_t(width)) + ")"
+                                                : std::to_string(p);
+            throw Exception(file + ": pixel " + where +
+                            ": its spectrum integrates beyond float's range (about 3.4e38); "
+                            "scale the image down");
+        }
+    }
+}
+
 void IntegrateSpectralPixels(const SpectralConversion& conversion, const float* pixels,
                              size_t count, int channels, float* rgb, int threads)
 {
@@ -304,20 +324,7 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
         std::vector<float> rgb(3 * count);
         IntegrateSpectralPixels(conversion, image.pixels.data(), count, image.channels, rgb.data(),
                                 r.threads);
-        // Finite spectra whose integral leaves float's range (values near
-        // 3.4e38) would be written as Inf: refused, naming the pixel, as a
-        // NaN in a spectrum is.
-        for (size_t p = 0; p < count; ++p)
-        {
-            if (!std::isfinite(rgb[3 * p]) || !std::isfinite(rgb[3 * p + 1]) ||
-                !std::isfinite(rgb[3 * p + 2]))
-            {
-                throw Exception(in + ": pixel (" + std::to_string(p % size_t(image.width)) + ", " +
-                                std::to_string(p / size_t(image.width)) +
-                                "): its spectrum integrates beyond float's range (about 3.4e38); "
-                                "scale the image down");
-            }
-        }
+        CheckIntegratedPixels(in, rgb.data(), count, image.width);
         std::vector<float> pixels;
         if (outChannels == 4)
         {

@@ -73,6 +73,11 @@ void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
 
 /// RGB (3 floats a pixel) of `count` pixels of `channels` floats each, on
 /// `threads` threads: one SIMD dot product per output channel and pixel.
+/// Refuses integrated pixels that left float's range (Inf from finite
+/// spectra near 3.4e38), naming the file and the pixel ((x, y) when
+/// `width` > 0, else its index).
+void CheckIntegratedPixels(const std::string& file, const float* rgb, size_t count, int width);
+
 void IntegrateSpectralPixels(const SpectralConversion& conversion, const float* pixels,
                              size_t count, int channels, float* rgb, int threads);
 

@@ -122,6 +122,7 @@ py::array_t<float> SpectralToRgb(
         py::gil_scoped_release release;
         jobs::CheckSpectralPixels(layout, "spectra", names, in, count, int(n));
         jobs::IntegrateSpectralPixels(conversion, in, count, int(n), out, t);
+        jobs::CheckIntegratedPixels("spectra", out, count, 0);
     }
     return rgb;
 }

@@ -57,3 +57,23 @@ def test_srgb_is_an_encoding_not_a_working_space():
     with pytest.raises(ValueError, match=r"rec709.*colorspace=srgb"):
         bandlight.Relighter("A", "D65", working_space="srgb")
     assert bandlight.Relighter("A", "D65", working_space="lin-srgb").working_space == "rec709"
+
+
+def test_spectra_that_integrate_beyond_float_are_refused_naming_the_pixel(tmp_path):
+    import numpy as np
+    import OpenImageIO as oiio
+    from conftest import cli_error
+    grid = np.arange(380.0, 781.0, 10.0)
+    spectra = np.full((2, 3, grid.size), 3.4e38, dtype=np.float32)
+    # Every value finite, their integral not: never Inf with exit 0.
+    with pytest.raises(ValueError, match=r"spectra: pixel 0: .*beyond float's range"):
+        bandlight.spectral_to_rgb(spectra, grid, plates="lit")
+    spec = oiio.ImageSpec(3, 2, grid.size, "float")
+    spec.channelnames = tuple(f"S0.{nm:g}nm" for nm in grid)
+    out = oiio.ImageOutput.create(str(tmp_path / "hot.exr"))
+    assert out.open(str(tmp_path / "hot.exr"), spec)
+    assert out.write_image(spectra)
+    out.close()
+    assert "pixel (0, 0): its spectrum integrates beyond float's range" in cli_error(
+        "spectral", tmp_path / "hot.exr", tmp_path / "rgb.exr", "--plates", "lit")
+    assert not (tmp_path / "rgb.exr").exists()
