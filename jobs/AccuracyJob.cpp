@@ -263,6 +263,7 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
                 "{dst=}S2 (or {illuminants})");
         }
         options.lights = {r.imageOptions.from, r.imageOptions.to};
+        options.forwardOnly = true;  // the change of light the image was given for
     }
     if (!r.heatmaps.empty() && r.images.empty())
     {
@@ -363,9 +364,9 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         };
     }
 
-    const size_t pairs = options.lights.size() * (options.lights.size() - 1);
+    const size_t pairs = PairCount(options);
     reporter.progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
-                      std::to_string(pairs) + " illuminant pairs x " +
+                      std::to_string(pairs) + (pairs == 1 ? " illuminant pair x " : " illuminant pairs x ") +
                       std::to_string(options.sets.size()) + " reflectance sets");
     std::mutex mu;
     int lastTenth = -1;
@@ -431,6 +432,7 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
                                                            r.heatmaps, stems[i], outputs,
                                                            reporter))
             {
+                h.image = image;
                 result.written.push_back(h.exr);
                 result.written.push_back(h.png);
                 result.heatmaps.push_back(std::move(h));
@@ -503,6 +505,20 @@ std::string AccuracyDocument(const AccuracyResult& result)
     for (const SetupCost& s : result.setupCost)
     {
         j["setup_cost"].push_back({{"what", s.what}, {"seconds", s.seconds}});
+    }
+    if (!result.heatmaps.empty())
+    {
+        j["heatmaps"] = nlohmann::ordered_json::array();
+        for (const HeatmapSummary& h : result.heatmaps)
+        {
+            j["heatmaps"].push_back({{"image", h.image},
+                                     {"method", h.method},
+                                     {"mean", h.mean},
+                                     {"p95", h.p95},
+                                     {"max", h.max},
+                                     {"exr", h.exr},
+                                     {"png", h.png}});
+        }
     }
     return j.dump(2);
 }

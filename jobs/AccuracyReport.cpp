@@ -20,12 +20,12 @@ std::string AccuracyReport(const AccuracyResult& result)
     const std::vector<CostRow>& cost = result.cost;
     const std::vector<SetupCost>& setup = result.setupCost;
     const std::map<std::string, double>& costAll = result.costAllThreads;
-    const size_t pairs = options.lights.size() * (options.lights.size() - 1);
+    const size_t pairs = PairCount(options);
     const Pairs& lecturePairs = LecturePairs();
     const bool anyShipped = bool(options.shipped);
     std::ostringstream out;
     out << "Re-lighting accuracy, CIEDE2000 against the spectral answer (" << options.lights.size()
-        << " illuminants, " << pairs << " ordered pairs, "
+        << " illuminants, " << pairs << (pairs == 1 ? " ordered pair, " : " ordered pairs, ")
         << FindRgbSpace(options.workingSpace).displayName << "), exposures "
         << Stops(options.exposures.front()) << " ... " << Stops(options.exposures.back())
         << " of the white.\n"

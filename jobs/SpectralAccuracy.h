@@ -35,6 +35,7 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
 /// One method's ΔE00 map over an image.
 struct HeatmapSummary
 {
+    std::string image;  ///< the spectral image mapped
     std::string method;
     double mean = 0.0;
     double p95 = 0.0;

@@ -121,7 +121,7 @@ std::vector<Pair> Pairs(const AccuracyOptions& o)
     {
         for (size_t j = 0; j < o.lights.size(); ++j)
         {
-            if (i != j)
+            if (o.forwardOnly ? i < j : i != j)
             {
                 pairs.push_back({i, j});
             }
@@ -197,6 +197,11 @@ MethodSpec WithPlates(MethodSpec m, const Plates& p, const AccuracyOptions& o)
 }
 
 }  // namespace
+
+size_t PairCount(const AccuracyOptions& options)
+{
+    return Pairs(options).size();
+}
 
 std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                                          const std::function<void(double)>& progress)

@@ -51,6 +51,9 @@ using ShippedFactory =
 struct AccuracyOptions
 {
     std::vector<Light> lights;  ///< every ordered pair of distinct lights
+    /// Only each light to those after it in `lights` (an image measured for
+    /// one change of light, --from → --to), not back.
+    bool forwardOnly = false;
     std::vector<std::string> methods;
     std::vector<ReflectanceSet> sets;
     std::string workingSpace = defaults::WORKING_SPACE;
@@ -75,6 +78,9 @@ struct AccuracyOptions
     /// corrects the cast again.
     bool measureMismatch = true;
 };
+
+/// How many pairs of lights `options` measures.
+size_t PairCount(const AccuracyOptions& options);
 
 /// The default comparison: A, C, D50, D65, E, F1–F12; every image method;
 /// the sets tcs (TCS01–15), tcs09-15 (held out from fitting) and random
