@@ -2,7 +2,9 @@
 #include "cli/Common.h"
 #include "bandlight/spectral/Parallel.h"
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 #include "cli/Diagnostics.h"
 #include "bandlight/jobs/Defaults.h"
@@ -163,6 +165,27 @@ void FinishFrameRun(const std::string& verb, const jobs::FrameRun& run, bool cou
                         " frames failed (" + frames + "); the first, frame " +
                         std::to_string(run.failed[0].frame) + ": " + run.failed[0].error);
     }
+}
+
+size_t EditDistance(const std::string& a, const std::string& b)
+{
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j)
+    {
+        row[j] = j;
+    }
+    for (size_t i = 1; i <= a.size(); ++i)
+    {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j)
+        {
+            const size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
 }
 
 }  // namespace bandlight::cli

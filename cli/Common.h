@@ -88,4 +88,8 @@ inline std::string MethodHelp()
 /// "a, b, c".
 std::string JoinNames(const std::vector<std::string>& names);
 
+/// Levenshtein distance (insertions, deletions, substitutions), for "did
+/// you mean" on a mistyped command.
+size_t EditDistance(const std::string& a, const std::string& b);
+
 }  // namespace bandlight::cli

@@ -9,6 +9,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "cli/Commands.h"
+#include "cli/Common.h"
 #include "cli/Diagnostics.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Exception.h"
@@ -72,6 +73,38 @@ int main(int argc, char** argv)
     {
         capture.finish(true, "");
         return app.exit(e);
+    }
+    catch (const CLI::RequiredError& e)
+    {
+        // "A subcommand is required" for a mistyped command: name it, and
+        // the command it was likely meant to be.
+        std::string commands, nearest;
+        size_t best = std::string::npos;
+        for (const CLI::App* sub : app.get_subcommands({}))
+        {
+            const std::string& name = sub->get_name();
+            commands += (commands.empty() ? "" : ", ") + name;
+            const size_t d = argc > 1 ? bandlight::cli::EditDistance(argv[1], name) : best;
+            if (d < best)
+            {
+                best = d;
+                nearest = name;
+            }
+        }
+        if (argc <= 1)
+        {
+            return fail(2, "", ("give a command: " + commands + " (bandlight --help)").c_str());
+        }
+        if (argv[1][0] != '-')
+        {
+            const std::string given = bandlight::OneLine(argv[1], 40);
+            return fail(2, "",
+                        ("unknown command '" + given + "'" +
+                         (best <= 2 ? " (did you mean " + nearest + "?)" : std::string()) +
+                         "; the commands are " + commands)
+                            .c_str());
+        }
+        return fail(2, "", e.what());
     }
     catch (const CLI::ParseError& e)
     {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <new>
 
 #include <OpenImageIO/imageio.h>
 
@@ -115,10 +116,11 @@ std::unique_ptr<OIIO::ImageInput> OpenImage(const std::string& path)
     return input;
 }
 
-/// Runs a module call: what it throws is reported as plain data
-/// (ImageFilesStatus), since this module's exception types are its own.
+/// Runs a module call on the image `path`: what it throws is reported as
+/// plain data (ImageFilesStatus), since this module's exception types are
+/// its own.
 template <typename Call>
-ImageFilesStatus Reported(Call&& call)
+ImageFilesStatus Reported(const std::string& path, Call&& call)
 {
     try
     {
@@ -128,6 +130,16 @@ ImageFilesStatus Reported(Call&& call)
     catch (const FileError& e)
     {
         return {e.what(), true, e.path(), e.error()};
+    }
+    catch (const std::bad_alloc&)
+    {
+        // OpenEXR reserves its line buffers itself (a 200000x1 image under
+        // a limit on address space): name the image, not std::bad_alloc.
+        ImageFilesStatus status;
+        status.message = PathInMessage(path) +
+                         ": out of memory reading or writing the image (it asks for more "
+                         "memory than this process may have)";
+        return status;
     }
     catch (const std::exception& e)
     {
@@ -163,6 +175,7 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
                            const PixelProcess& process, const std::string& note)
 {
     return Reported(
+        in,
         [&]
         {
             auto input = OpenImage(in);
@@ -197,6 +210,7 @@ ImageFilesStatus WriteImage(const std::string& path, const float* pixels, int wi
                             const ImageDescription& description, PixelType type)
 {
     return Reported(
+        path,
         [&]
         {
             const OIIO::TypeDesc t = type == PixelType::HALF    ? OIIO::TypeDesc::HALF
@@ -235,6 +249,7 @@ ImageFilesStatus WriteImage(const std::string& path, const float* pixels, int wi
 ImageFilesStatus Read(const std::string& path, ImageData& image, bool pixels)
 {
     return Reported(
+        path,
         [&]
         {
             auto input = OpenImage(path);

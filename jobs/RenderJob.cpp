@@ -2,6 +2,7 @@
 #include "bandlight/jobs/RenderJob.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <sstream>
 
@@ -184,9 +185,14 @@ std::string ModeName(const RenderSettings& s)
 Scene LoadScene(const std::string& path, const std::optional<std::string>& text,
                 const std::string& source, const std::optional<std::string>& mode)
 {
-    if (path.empty() == !text.has_value())
+    if (!path.empty() && text.has_value())
     {
-        throw ParameterError("give a scene file or {text=}YAML, one of the two");
+        throw ParameterError("give a scene file or {text=}YAML, not both");
+    }
+    if (path.empty() && !text.has_value())
+    {
+        // The command has no text option: an empty SCENE is a missing file.
+        throw FileError(path, ENOENT, "no scene file to render");
     }
     const std::string name = text ? source : path;
     Scene scene = text ? ReadSceneText(*text, source) : ReadSceneFile(path);

@@ -27,7 +27,7 @@ namespace
 
 /// Emissive images: 1 / the 99.9th percentile of Y relative to a white
 /// reflector under `from`; reflective images: 1.
-double EmissiveScale(const SpectralImage& image, const SpectralOptions& o)
+double EmissiveScale(const std::string& path, const SpectralImage& image, const SpectralOptions& o)
 {
     if (image.layout.kind == SpectralKind::REFLECTIVE)
     {
@@ -59,9 +59,9 @@ double EmissiveScale(const SpectralImage& image, const SpectralOptions& o)
     const double top = Percentile(lum, 0.999);
     if (!(top > 0.0) || !(whiteY > 0.0))
     {
-        throw Exception(
-            "the spectral image is black under the eye's sensitivity: nothing to "
-            "measure");
+        throw Exception(path +
+                        ": the spectral image is black under the eye's sensitivity: nothing to "
+                        "measure");
     }
     return 1.0 / top;
 }
@@ -109,7 +109,7 @@ ReflectanceSet ReflectanceSetFromSpectralImage(const std::string& path,
     const SpectralLayout& layout = image.layout;
     const size_t n = layout.wavelengths.size();
     const bool emissive = layout.kind == SpectralKind::EMISSIVE;
-    const double scale = EmissiveScale(image, options);
+    const double scale = EmissiveScale(path, image, options);
     const std::vector<double> light =
         emissive ? LightOnLayout(layout, options.from.spectrum) : std::vector<double>(n, 1.0);
     const size_t count = size_t(image.width) * size_t(image.height);
@@ -176,7 +176,7 @@ std::vector<HeatmapSummary> WriteAccuracyHeatmaps(const std::string& path, const
     const Plates plates = o.plates.parsed();
     const bool balanced = plates.convention == PlateConvention::BALANCED;
     const bool reflective = layout.kind == SpectralKind::REFLECTIVE;
-    const double scale = EmissiveScale(image, o);
+    const double scale = EmissiveScale(path, image, o);
     // Every pixel as a remittance (emissive ones divided by S1, as the
     // accuracy set takes them), seen under S1 (the plate) and under S2 (the
     // exact answer), each light's white reflector at Y = 1.

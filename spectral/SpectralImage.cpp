@@ -335,7 +335,8 @@ SpectralLayout FindSpectralLayout(const std::string& file,
             if (!std::isfinite(nm) || nm <= 0.0)
             {
                 throw Exception(In(file) + "channel '" + OneLine(name, 80) +
-                                "' is given a wavelength that is not positive");
+                                "' is given a wavelength that is " +
+                                (std::isfinite(nm) ? "not positive" : "not a finite number"));
             }
             found.push_back({nm, int(it - channelNames.begin())});
         }
@@ -710,12 +711,31 @@ std::map<std::string, double> ReadChannelWavelengths(const std::string& path)
                 {
                     break;
                 }
+                // "channel, wavelength" heads pairs only when its second
+                // field reads as a heading; "band_00,abc" is a row whose
+                // wavelength is wrong, not a header.
+                std::string heading;
+                for (const char ch : second)
+                {
+                    heading += char(std::tolower(static_cast<unsigned char>(ch)));
+                }
                 pairs = true;
-                continue;
+                if (heading.find("wave") != std::string::npos ||
+                    heading.find("nm") != std::string::npos ||
+                    heading.find("lambda") != std::string::npos)
+                {
+                    continue;
+                }
             }
             pairs = true;
         }
-        if (!secondNumber || !std::isfinite(nm) || nm <= 0.0)
+        if (secondNumber && !std::isfinite(nm))
+        {
+            throw Exception(SourcePosition(path, lineNo) + ": the wavelength of '" +
+                            OneLine(first, 80) + "' is not a finite number: '" +
+                            OneLine(second, 40) + "'");
+        }
+        if (!secondNumber || nm <= 0.0)
         {
             throw Exception(SourcePosition(path, lineNo) +
                             ": expected 'channel,wavelength_nm', got '" + OneLine(line, 80) + "'");

@@ -45,6 +45,10 @@ def apply(input, output, *, frames=None, client=None, **options):
     import os
     import time
 
+    if not all(callable(getattr(client, name, None))
+               for name in ("submit", "gather", "scheduler_info")):
+        raise TypeError("client= must be a distributed.Client (it submits and gathers the "
+                        f"chunks), got {type(client).__name__}")
     if frames is None:
         raise ValueError("client= spreads a frame sequence: give frames=")
     every = frame_set(frames)

@@ -303,10 +303,19 @@ Vec3 ToVec3(const py::handle& arg, const std::string& what)
 Colours ToColours(const py::handle& arg, const std::string& what)
 {
     Colours c;
+    if (py::isinstance<py::str>(arg) || py::isinstance<py::bytes>(arg))
+    {
+        // numpy would take a string as an array of one string and fail inside.
+        throw py::type_error(what + " must be colours, numbers of shape (..., 3), not a string ('" +
+                             OneLine(py::str(arg), 40) +
+                             "'); a light's CCT is bandlight.cri(light)[\"cct_K\"]");
+    }
     c.data = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(arg);
     if (!c.data)
     {
-        throw Exception(what + " must be an array of numbers");
+        PyErr_Clear();
+        throw py::type_error(what + " must be an array of numbers, got " +
+                             std::string(py::str(py::type::of(arg).attr("__name__"))));
     }
     if (c.data.ndim() < 1 || c.data.shape(c.data.ndim() - 1) != 3)
     {

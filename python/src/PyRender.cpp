@@ -17,6 +17,10 @@ jobs::RenderRequest SceneRequest(const std::optional<Path>& scene,
                                  const std::optional<std::string>& text, const std::string& source,
                                  const std::optional<std::string>& mode, bool unplanned)
 {
+    if (!scene && !text)
+    {
+        throw py::type_error("render() takes a scene file or text=YAML, one of the two");
+    }
     jobs::RenderRequest r;
     r.scene = scene ? scene->string() : "";
     r.text = text;

@@ -40,7 +40,29 @@ jobs::SpectralOptions Options(const py::object& src, const py::object& dst,
     {
         if (py::isinstance<py::dict>(channels))
         {
-            o.channelWavelengths = channels.cast<std::map<std::string, double>>();
+            for (const auto& item : channels.cast<py::dict>())
+            {
+                if (!py::isinstance<py::str>(item.first))
+                {
+                    throw py::type_error(
+                        "channels= maps channel names (str) to wavelengths in nm, got the key " +
+                        OneLine(py::repr(item.first), 40) + " (" +
+                        std::string(py::str(py::type::of(item.first).attr("__name__"))) + ")");
+                }
+                double nm = 0.0;
+                try
+                {
+                    nm = item.second.cast<double>();
+                }
+                catch (const py::cast_error&)
+                {
+                    throw py::type_error("channels=: the wavelength of '" +
+                                         OneLine(item.first.cast<std::string>(), 40) +
+                                         "' must be a number of nm, got " +
+                                         OneLine(py::repr(item.second), 40));
+                }
+                o.channelWavelengths[item.first.cast<std::string>()] = nm;
+            }
         }
         else
         {

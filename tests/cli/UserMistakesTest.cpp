@@ -79,8 +79,9 @@ TEST_CASE("config --base into the base's own folder is refused and the studio co
           "[cli][mistakes]")
 {
     const std::string studio = Folder("studio");
-    REQUIRE(Bandlight("config --out '" + studio + "' --illuminants A,D65 --methods bradford")
-                .code == 0);
+    REQUIRE(
+        Bandlight("config --out '" + studio + "' --illuminants A,D65 --methods bradford").code ==
+        0);
     const std::string before = Slurp(studio + "/config.ocio");
     const Result r = Bandlight("config --base '" + studio + "/config.ocio' --out '" + studio +
                                "' --illuminants A,F11 --methods cat02");
@@ -115,17 +116,18 @@ TEST_CASE("Empty output paths are refused, never reported as written", "[cli][mi
 TEST_CASE("Options that do not apply are refused, naming them", "[cli][mistakes]")
 {
     const std::string dir = Folder("options");
-    REQUIRE(Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford")
-                .code == 0);
+    REQUIRE(
+        Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford").code ==
+        0);
     REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
                       "/plate.exr'")
                 .code == 0);
     SECTION("apply --look with the options of a change of light")
     {
-        const Result r = Bandlight("apply '" + dir + "/plate.exr' '" + dir +
-                                   "/out.exr' --look bradford_A_to_D65 --config '" + dir +
-                                   "/pkg' --from F11 --to A --method band3 --camera '" + dir +
-                                   "/missing.csv'");
+        const Result r =
+            Bandlight("apply '" + dir + "/plate.exr' '" + dir +
+                      "/out.exr' --look bradford_A_to_D65 --config '" + dir +
+                      "/pkg' --from F11 --to A --method band3 --camera '" + dir + "/missing.csv'");
         CheckOneLine(r, "--look");
         CHECK_THAT(r.err, Contains("--from") && Contains("--method") && Contains("--camera"));
         CHECK(!fs::exists(dir + "/out.exr"));
@@ -146,8 +148,9 @@ TEST_CASE("Options that do not apply are refused, naming them", "[cli][mistakes]
     }
 }
 
-TEST_CASE("lut: the format follows the extension, and a format its extension contradicts is refused",
-          "[cli][mistakes]")
+TEST_CASE(
+    "lut: the format follows the extension, and a format its extension contradicts is refused",
+    "[cli][mistakes]")
 {
     const std::string dir = Folder("lut_format");
     REQUIRE(Bandlight("lut --from A --to D65 --method bradford --size 9 -o '" + dir + "/x.cube'")
@@ -174,7 +177,8 @@ TEST_CASE("Output paths are checked before any work", "[cli][mistakes]")
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         CHECK(r.code == 2);
-        CHECK_THAT(r.err, Contains("nodir/x.json: cannot write there: the folder") && Contains("does not exist"));
+        CHECK_THAT(r.err, Contains("nodir/x.json: cannot write there: the folder") &&
+                              Contains("does not exist"));
         CHECK(s < 5.0);  // the full run takes minutes; the check is immediate
     }
     SECTION("a plot that is neither .png nor .svg")
@@ -192,8 +196,7 @@ TEST_CASE("Images are read from regular files: a device or a FIFO is refused at 
           "[cli][mistakes]")
 {
     const std::string dir = Folder("devices");
-    CheckOneLine(Bandlight("apply /dev/zero '" + dir + "/out.exr' --from A --to D65"),
-                 "a device");
+    CheckOneLine(Bandlight("apply /dev/zero '" + dir + "/out.exr' --from A --to D65"), "a device");
     CheckOneLine(Bandlight("spectral /dev/zero '" + dir + "/out.exr'"), "a device");
     const std::string fifo = dir + "/x.exr";
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
@@ -266,4 +269,55 @@ TEST_CASE("A missing spectrum file is called missing, not an unknown light", "[c
     CheckOneLine(Bandlight("xyz --illuminant lamp.csv"), "lamp.csv: no such spectrum file");
     // A name that is neither lists the built-in lights.
     CheckOneLine(Bandlight("xyz --illuminant D66x"), "unknown illuminant");
+}
+
+TEST_CASE("Messages name what is wrong and where", "[cli][mistakes]")
+{
+    const std::string dir = Folder("messages");
+    // A mistyped command is named, with the command it was likely meant to be.
+    CheckOneLine(Bandlight("applyy"), "unknown command 'applyy' (did you mean apply?)");
+    CheckOneLine(Bandlight(""), "give a command: tables, xyz");
+    // An empty scene is a missing file, not an option the command lacks.
+    Result r = Bandlight("render ''");
+    CheckOneLine(r, "'' (an empty path): no scene file to render");
+    CHECK_THAT(r.err, !Contains("--text"));
+    // A channel list whose one row has a wrong wavelength is not a header.
+    const std::string shot = SpectralShot(dir);
+    std::ofstream(dir + "/one.csv") << "band_00,abc\n";
+    CheckOneLine(Bandlight("spectral '" + shot + "' '" + dir + "/o.exr' --channel-wavelengths '" +
+                           dir + "/one.csv'"),
+                 "one.csv:1: expected 'channel,wavelength_nm', got 'band_00,abc'");
+    // An infinite wavelength is not called "not positive".
+    CheckOneLine(
+        Bandlight("spectral '" + shot + "' '" + dir + "/o.exr' --channel S0.400,000000nm=1e400"),
+        "is given a wavelength that is not a finite number");
+    CHECK_FALSE(fs::exists(dir + "/o.exr"));
+}
+
+TEST_CASE("An image that needs more memory than the process may have is named", "[cli][mistakes]")
+{
+#ifdef BANDLIGHT_SANITIZED_TESTS
+    WARN(
+        "skipped: AddressSanitizer reserves terabytes of address space; ulimit -v cannot be "
+        "set under it");
+    return;
+#endif
+    // OpenEXR reserves its scanline buffers itself: a 200000x1 image under a
+    // limit on address space once failed with a bare "std::bad_alloc".
+    const std::string dir = Folder("memory");
+    const Result w =
+        Sh("/usr/bin/python3 -c \"import numpy as np, OpenImageIO as oiio; "
+           "s = oiio.ImageSpec(200000, 1, 3, 'float'); "
+           "o = oiio.ImageOutput.create('" +
+           dir + "/wide.exr'); o.open('" + dir +
+           "/wide.exr', s); o.write_image(np.ones((1, 200000, 3), np.float32)); "
+           "o.close()\"");
+    REQUIRE(w.code == 0);
+    const Result r = Sh("ulimit -v 1500000 && '" + std::string(BANDLIGHT_EXE) + "' apply '" + dir +
+                        "/wide.exr' '" + dir + "/out.exr' --from A --to D65");
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("wide.exr: "));
+    CHECK_THAT(r.err, !Contains("bad_alloc"));
+    CHECK_FALSE(fs::exists(dir + "/out.exr"));
 }

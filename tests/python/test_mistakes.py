@@ -77,3 +77,20 @@ def test_spectra_that_integrate_beyond_float_are_refused_naming_the_pixel(tmp_pa
     assert "pixel (0, 0): its spectrum integrates beyond float's range" in cli_error(
         "spectral", tmp_path / "hot.exr", tmp_path / "rgb.exr", "--plates", "lit")
     assert not (tmp_path / "rgb.exr").exists()
+
+
+def test_wrong_types_are_type_errors_with_the_library_message(tmp_path):
+    # A light's name where colours belong: not pybind11's "nullptr" message.
+    with pytest.raises(TypeError, match=r"xyz must be colours.*not a string \('D65'\)"):
+        bandlight.cct("D65")
+    # Channel names map to wavelengths: a number as a key is named.
+    with pytest.raises(TypeError, match=r"channels= maps channel names \(str\).*key 1 \(int\)"):
+        bandlight.read_spectral_image(tmp_path / "any.exr", channels={1: 450.0})
+    with pytest.raises(TypeError, match=r"wavelength of 'band_00' must be a number"):
+        bandlight.read_spectral_image(tmp_path / "any.exr", channels={"band_00": "blue"})
+    # A Dask client that is not one: not an AttributeError from inside.
+    with pytest.raises(TypeError, match=r"client= must be a distributed.Client.*int"):
+        bandlight.apply(tmp_path / "in.####.exr", tmp_path / "out.####.exr", frames="1-2",
+                        client=42, src="A", dst="D65")
+    with pytest.raises(TypeError, match="one of the two"):
+        bandlight.render()

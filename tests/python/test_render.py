@@ -86,8 +86,10 @@ def test_scene_errors_name_file_and_line(tmp_path):
     assert str(e.value) == cli_error("render", tmp_path / "missing.yaml")
     with pytest.raises(ValueError, match="only band mode"):
         bandlight.render(SCENES / "counterexample.yaml", mode="spectral")
-    with pytest.raises(ValueError, match="one of the two"):
+    with pytest.raises(TypeError, match="one of the two"):
         bandlight.render()
+    with pytest.raises(ValueError, match="not both"):
+        bandlight.render(SCENES / "counterexample.yaml", text="lights: []")
 
 
 def image_bytes(path):
