@@ -43,6 +43,9 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
     const jobs::ApplyResult r = jobs::ApplyImages(o.request, reporter);
     if (!r.sequence)
     {
+        // One line on success, as every command that writes says what it wrote.
+        std::cout << "Applied " << r.applied << " to " << o.request.input << "; wrote "
+                  << o.request.output << "\n";
         return;
     }
     jobs::FrameRun run;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "bandlight/plugin/ConfigReferences.h"
@@ -84,7 +85,27 @@ Light CheckedIlluminant(const NamedSpectrum& s, const std::string& source, Repor
 
 Light IlluminantFromFile(const std::string& path, Reporter& reporter)
 {
-    return CheckedIlluminant(ReadSpectraFile(path).front(), path, reporter);
+    NamedSpectrum light = ReadSpectraFile(path).front();
+    // A column headed with a word for "the values" names no light: looks
+    // would read bradford_A_to_value. The file's name does.
+    std::string lower;
+    for (const char c : light.name)
+    {
+        lower += char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    static const std::set<std::string> generic = {
+        "",         "value",    "values", "power", "relative_power", "relative power", "intensity",
+        "spd",      "data",     "y",      "s",     "radiance",       "irradiance",     "emission",
+        "spectrum", "relative", "energy", "counts"};
+    if (generic.count(lower) != 0)
+    {
+        const std::string stem = std::filesystem::path(path).stem().string();
+        if (!stem.empty())
+        {
+            light.name = stem;
+        }
+    }
+    return CheckedIlluminant(light, path, reporter);
 }
 
 Light ResolveIlluminant(const std::string& nameOrFile, Reporter& reporter)

@@ -256,6 +256,12 @@ void CheckRenderOutputs(const PreparedRender& prepared)
     {
         throw ParameterError("{compare} needs an RGB output: the spectral reference has no bands");
     }
+    if (r.compare && scene.settings.mode == RenderSettings::Mode::SPECTRAL)
+    {
+        throw ParameterError(
+            "{compare} measures a band render against the spectral one, and this render is "
+            "spectral already (its map would be 0 everywhere): give {mode=}band3 or bandN");
+    }
     if (!r.previewPath.empty() && r.preview && BandOutput(scene))
     {
         throw ParameterError("{preview} shows RGB: band values (output: bands) have no preview");

@@ -500,6 +500,17 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
         return files;
     }
     files.outputEncoded = o.shaper.kind != ShaperSpec::Kind::NONE;
+    if (files.outputEncoded)
+    {
+        // A host that reads this file alone must learn from it that it is
+        // only the middle of a chain (where the format holds a comment).
+        const std::string name = ShaperCompanionPath(path);
+        o.description += std::string(o.description.empty() ? "" : " ") +
+                         "Shaper-encoded in and out: apply " +
+                         name.substr(name.find_last_of('/') + 1) +
+                         " before this LUT and its inverse after; alone, this file is not "
+                         "the transform.";
+    }
     // Bake into memory first, so a failure leaves no file behind.
     const std::vector<float> lattice = BakeLattice(exact, o.shaper, o.size, files.outputEncoded);
     if (o.format == LutFormat::SPI3D)

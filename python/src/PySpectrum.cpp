@@ -249,6 +249,54 @@ left operand's grid) and scale (``2.0 * s``). They pickle.
             py::is_operator(), py::arg("other"),
             "Pointwise sum on this spectrum's grid (the other resampled onto it).")
         .def(
+            "__truediv__",
+            [](const NamedSpectrum& a, const NamedSpectrum& b)
+            {
+                // Pointwise, on a's grid; 0/0 and x/0 are refused, not Inf or NaN.
+                Spectrum q = a.spectrum;
+                const Spectrum d = b.spectrum.resampledLike(a.spectrum);
+                for (size_t i = 0; i < q.size(); ++i)
+                {
+                    if (d[i] == 0.0)
+                    {
+                        throw Exception("Spectrum division: '" + OneLine(b.name, 40) +
+                                        "' is 0 at " + std::to_string(q.wavelength(i)) + " nm");
+                    }
+                    q.values()[i] /= d[i];
+                }
+                return NamedSpectrum{"", q};
+            },
+            py::is_operator(), py::arg("other"),
+            "Pointwise quotient on this spectrum's grid (the other resampled onto it); a\n"
+            "divisor that is 0 anywhere on the grid is refused.")
+        .def(
+            "__add__",
+            [](const NamedSpectrum& a, double k)
+            {
+                Spectrum s = a.spectrum;
+                s += k;
+                return NamedSpectrum{a.name, s};
+            },
+            py::is_operator(), py::arg("other"), "The spectrum plus a number (its name kept).")
+        .def(
+            "__radd__",
+            [](const NamedSpectrum& a, double k)
+            {
+                Spectrum s = a.spectrum;
+                s += k;
+                return NamedSpectrum{a.name, s};
+            },
+            py::is_operator(), py::arg("other"), "A number plus the spectrum (its name kept).")
+        .def(
+            "__sub__",
+            [](const NamedSpectrum& a, double k)
+            {
+                Spectrum s = a.spectrum;
+                s += -k;
+                return NamedSpectrum{a.name, s};
+            },
+            py::is_operator(), py::arg("other"), "The spectrum minus a number (its name kept).")
+        .def(
             "__sub__",
             [](const NamedSpectrum& a, const NamedSpectrum& b) {
                 return NamedSpectrum{"", a.spectrum - b.spectrum};

@@ -27,6 +27,7 @@ struct PyRelighter
     std::string dst;
     std::string method;
     std::string workingSpace;
+    std::string plates;  ///< the plates' key: "lit", "balanced-cat02"
     std::unique_ptr<Relighter> relighter;
     /// What it was made from, resolved (the lights and training as
     /// Spectrum, the camera file's path): its pickled state, so that a
@@ -61,6 +62,7 @@ PyRelighter MakeRelighter(const py::object& src, const py::object& dst, const st
             to.name,
             spec.name,
             space.name,
+            spec.plates.key(),
             std::make_unique<Relighter>(from, to, spec, space, o),
             state};
 }
@@ -362,11 +364,14 @@ white-balanced plates, CAT02).
         .def_readonly("method", &PyRelighter::method, "The method's canonical name.")
         .def_readonly("working_space", &PyRelighter::workingSpace,
                       "The working space's canonical name.")
+        .def_readonly("plates", &PyRelighter::plates,
+                      "The plates it is for: \"lit\", or \"balanced-<adaptation>\".")
         .def("__repr__",
              [](const PyRelighter& r)
              {
                  return "<Relighter " + r.method + " " + OneLine(r.src, 80) + " -> " +
-                        OneLine(r.dst, 80) + " in " + r.workingSpace + ">";
+                        OneLine(r.dst, 80) + " in " + r.workingSpace + ", " + r.plates +
+                        " plates>";
              });
 
     m.def(

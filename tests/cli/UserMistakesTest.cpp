@@ -159,6 +159,9 @@ TEST_CASE(
     const std::string cube = Slurp(dir + "/x.cube");
     CHECK_THAT(cube, Contains("LUT_3D_SIZE 9"));
     CHECK_THAT(cube, !Contains("<?xml"));
+    // It says, in the file, that it is the middle of a chain.
+    CHECK_THAT(cube, Contains("Shaper-encoded in and out: apply x.shaper.clf before this LUT"));
+    CHECK(fs::is_regular_file(dir + "/x.shaper.clf"));
     CheckOneLine(Bandlight("lut --from A --to D65 --format clf -o '" + dir + "/y.cube'"),
                  "is named .clf");
     CheckOneLine(Bandlight("lut --from A --to D65 -o '" + dir + "/y.txt'"), ".txt");

@@ -94,3 +94,18 @@ def test_wrong_types_are_type_errors_with_the_library_message(tmp_path):
                         client=42, src="A", dst="D65")
     with pytest.raises(TypeError, match="one of the two"):
         bandlight.render()
+
+
+def test_relighters_say_their_plates_and_spectra_do_arithmetic():
+    lit = bandlight.Relighter("A", "D65", plates="lit")
+    balanced = bandlight.Relighter("A", "D65")
+    assert (lit.plates, balanced.plates) == ("lit", "balanced-cat02")
+    assert repr(lit) != repr(balanced) and "lit plates" in repr(lit)
+    a, d = bandlight.illuminant("A"), bandlight.illuminant("D65")
+    for nm in (400.0, 555.0, 700.0):
+        assert (d / a)(nm) == pytest.approx(d(nm) / a(nm), rel=1e-12)
+        assert (a + 0.5)(nm) == pytest.approx(a(nm) + 0.5, rel=1e-12)
+        assert (0.5 + a)(nm) == pytest.approx(a(nm) + 0.5, rel=1e-12)
+        assert (a - 0.5)(nm) == pytest.approx(a(nm) - 0.5, rel=1e-12)
+    with pytest.raises(ValueError, match="is 0 at"):
+        a / (a * 0.0)

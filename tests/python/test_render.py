@@ -100,17 +100,19 @@ def image_bytes(path):
                   path.read_bytes())
 
 
-@pytest.mark.parametrize("mode, spectra", [("spectral", True), ("band3", False)])
-def test_render_out_writes_the_commands_files(tmp_path, mode, spectra):
+@pytest.mark.parametrize("mode, spectra, compare", [("spectral", True, False),
+                                                    ("band3", False, True)])
+def test_render_out_writes_the_commands_files(tmp_path, mode, spectra, compare):
     scene = tmp_path / "small.yaml"
     scene.write_text(SMALL)
     (tmp_path / "cli").mkdir()
     (tmp_path / "py").mkdir()
-    flags = ["--mode", mode, "--compare"] + (["--spectra"] if spectra else [])
+    flags = (["--mode", mode] + (["--compare"] if compare else []) +
+             (["--spectra"] if spectra else []))
     printed = run_cli("render", scene, "-o", tmp_path / "cli" / "small.exr", *flags).stdout
     result = bandlight.render(scene, mode=mode, out=tmp_path / "py" / "small.exr",
-                              compare=True, spectra=spectra)
-    names = ["small.exr", "small.png", "small_dE00.exr", "small_dE00.png"]
+                              compare=compare, spectra=spectra)
+    names = ["small.exr", "small.png"] + (["small_dE00.exr", "small_dE00.png"] if compare else [])
     assert result["files"] == [str(tmp_path / "py" / n) for n in names]
     assert sorted(p.name for p in (tmp_path / "py").iterdir()) == sorted(names)
     for name in names:
@@ -119,13 +121,24 @@ def test_render_out_writes_the_commands_files(tmp_path, mode, spectra):
     assert result["image"].shape == (30, 40, 3)
     if not spectra:
         np.testing.assert_array_equal(result["image"], read_image(tmp_path / "py" / "small.exr"))
-    c = result["comparison"]
-    assert c["exr"] == str(tmp_path / "py" / "small_dE00.exr")
-    assert f"compare with spectral: {c['pixels']} pixels, ΔE00 mean {c['mean']:.3f}, " \
-           f"p95 {c['p95']:.3f}, max {c['max']:.3f}" in printed
-    assert (c["max"] == 0.0) == (mode == "spectral")
+    if compare:
+        c = result["comparison"]
+        assert c["exr"] == str(tmp_path / "py" / "small_dE00.exr")
+        assert f"compare with spectral: {c['pixels']} pixels, ΔE00 mean {c['mean']:.3f}, " \
+               f"p95 {c['p95']:.3f}, max {c['max']:.3f}" in printed
+        assert c["max"] > 0.0
     assert printed.startswith(result["explanation"])
     assert f"rendered {result['counters']['pixels']} pixels " in printed
+
+
+def test_compare_on_a_spectral_render_is_refused(tmp_path):
+    scene = tmp_path / "small.yaml"
+    scene.write_text(SMALL)
+    assert "spectral already" in cli_error("render", scene, "--mode", "spectral", "--compare",
+                                           "-o", tmp_path / "x.exr")
+    with pytest.raises(ValueError, match="spectral already"):
+        bandlight.render(scene, mode="spectral", out=tmp_path / "y.exr", compare=True)
+    assert not any(tmp_path.glob("*.exr"))
 
 
 def test_render_preview_where_asked(tmp_path):
