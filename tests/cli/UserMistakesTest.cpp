@@ -324,3 +324,32 @@ TEST_CASE("An image that needs more memory than the process may have is named", 
     CHECK_THAT(r.err, !Contains("bad_alloc"));
     CHECK_FALSE(fs::exists(dir + "/out.exr"));
 }
+
+TEST_CASE("Commands say what they did and name lights after their files", "[cli][mistakes]")
+{
+    const std::string dir = Folder("said");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/plate.exr'")
+                .code == 0);
+    // apply on one image prints one line on success.
+    Result r = Bandlight("apply '" + dir + "/plate.exr' '" + dir +
+                        "/out.exr' --from A --to D65 --method bradford");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(r.out == "Applied bradford_A_to_D65 to " + dir + "/plate.exr; wrote " + dir +
+                       "/out.exr\n");
+    // A lamp whose one column is headed "value" is the file's light.
+    std::ofstream lamp(dir + "/tungsten3200.csv");
+    lamp << "wavelength_nm,value\n";
+    for (int nm = 380; nm <= 780; nm += 5)
+    {
+        lamp << nm << "," << 0.2 + 0.002 * (nm - 380) << "\n";
+    }
+    lamp.close();
+    r = Bandlight("config --out '" + dir + "/cfg' --illuminants 'A," + dir +
+                  "/tungsten3200.csv' --methods bradford");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), Contains("bradford_A_to_tungsten3200"));
+    CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), !Contains("_to_value"));
+}
