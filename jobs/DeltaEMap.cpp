@@ -13,7 +13,10 @@ namespace bandlight::jobs
 {
 
 DeltaEMap::DeltaEMap(int width, int height)
-    : m_width(width), m_height(height), m_values(size_t(width) * size_t(height), 0.0f)
+    : m_width(width),
+      m_height(height),
+      m_values(size_t(width) * size_t(height), 0.0f),
+      m_mask(size_t(width) * size_t(height), 0)
 {
 }
 
@@ -21,6 +24,7 @@ void DeltaEMap::set(size_t index, double deltaE)
 {
     assert(index < m_values.size());
     m_values[index] = float(deltaE);
+    m_mask[index] = 1;
     m_measured.push_back(deltaE);
 }
 
@@ -49,10 +53,13 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
     data.attributes = attributes;
     WriteImage(exr, map.values().data(), map.width(), map.height(), 1, {"dE00"}, data,
                PixelType::FLOAT, &outputs);
-    // The colour map: block means on at most 400 columns.
+    // The colour map: block means of the measured pixels on at most 400
+    // columns; a block with none is no data (NaN: not drawn, so the slate
+    // background shows, never the colour of a perfect pixel).
     const size_t width = size_t(map.width());
     const size_t height = size_t(map.height());
     const std::vector<float>& values = map.values();
+    const std::vector<char>& measured = map.measured();
     const size_t block = std::max<size_t>(1, (width + 399) / 400);
     std::ostringstream matrix;
     for (size_t by = 0; by < height; by += block)
@@ -65,11 +72,22 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
             {
                 for (size_t x = bx; x < std::min(bx + block, width); ++x)
                 {
-                    s += values[y * width + x];
-                    ++k;
+                    if (measured[y * width + x])
+                    {
+                        s += values[y * width + x];
+                        ++k;
+                    }
                 }
             }
-            matrix << (bx ? " " : "") << s / std::max(k, 1);
+            matrix << (bx ? " " : "");
+            if (k > 0)
+            {
+                matrix << s / k;
+            }
+            else
+            {
+                matrix << "NaN";
+            }
         }
         matrix << "\n";
     }
@@ -80,7 +98,10 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
            << "set size ratio -1\nunset key\nunset xtics\nunset ytics\n"
               "set yrange [*:*] reverse\nset cbrange [0:"
            << kDeltaEMapTop << "]\n"
-           << "set cblabel 'CIEDE2000 (" << kDeltaEMapTop << " and above: white)'\n"
+           << "set cblabel 'CIEDE2000 (" << kDeltaEMapTop
+           << " and above: white; slate: no data)'\n"
+           << "set object 1 rectangle from graph 0, graph 0 to graph 1, graph 1 behind "
+              "fillcolor rgb '#5b7083' fillstyle solid noborder\n"
            << "set palette defined (0 '#000004', 2 '#3b0f70', 4 '#8c2981', 6 '#de4968', "
               "8 '#fe9f6d', 10 '#fcfdbf')\n"
               "plot $bandlight_data matrix with image\n";

@@ -45,6 +45,8 @@ public:
     int height() const noexcept { return m_height; }
     /// Every pixel's value, 0 where nothing was measured.
     const std::vector<float>& values() const noexcept { return m_values; }
+    /// 1 where the pixel was measured, 0 where not.
+    const std::vector<char>& measured() const noexcept { return m_mask; }
     /// Mean, 95th percentile and maximum of the measured pixels (all 0
     /// when none was).
     DeltaESummary summary() const;
@@ -53,6 +55,7 @@ private:
     int m_width = 0;
     int m_height = 0;
     std::vector<float> m_values;
+    std::vector<char> m_mask;
     std::vector<double> m_measured;  ///< in the order set() was called
 };
 

@@ -25,15 +25,20 @@ struct Curve
 };
 
 /// The gnuplot script and its data: each curve as a line and its band
-/// means as dashed steps of the same colour, the band edges dotted.
+/// means as thick translucent steps of the same colour over the whole band,
+/// the band edges dotted. One legend entry per curve, outside the plot when
+/// there are many, in colours that do not repeat for 16 curves.
 void DrawCurves(const std::vector<Curve>& curves, const BandSet& bands, const std::string& title,
                 const std::string& ylabel, const std::string& out)
 {
     std::ostringstream data, plot;
+    const bool many = curves.size() > 4;
     // Names and titles come from files and file names: quoted so gnuplot
     // shows them and never evaluates them.
-    plot << "set title " << GnuplotQuote(title) << "\nset xlabel 'wavelength (nm)'\nset ylabel "
-         << GnuplotQuote(ylabel) << "\nset grid\nset key top right\nset xrange [360:830]\n";
+    plot << "set title " << GnuplotQuote(title + " (thick, translucent: band means)")
+         << "\nset xlabel 'wavelength (nm)'\nset ylabel " << GnuplotQuote(ylabel)
+         << "\nset grid\nset xrange [360:830]\n"
+         << (many ? "set key outside right top vertical spacing 0.9\n" : "set key top right\n");
     for (const Band& b : bands)
     {
         plot << "set arrow from " << b.minNm << ", graph 0 to " << b.minNm
@@ -43,7 +48,11 @@ void DrawCurves(const std::vector<Curve>& curves, const BandSet& bands, const st
     }
     plot << "set arrow from " << bands.bands().back().maxNm << ", graph 0 to "
          << bands.bands().back().maxNm << ", graph 1 nohead dt 3 lc rgb '#888888'\n";
-    const char* colours[] = {"#c0392b", "#27ae60", "#2a7ab0", "#8e44ad", "#d35400", "#16a085"};
+    // 16 colours told apart on screen and in print (Tableau 10 and six more).
+    static const char* colours[] = {"c0392b", "1f77b4", "2ca02c", "ff7f0e", "9467bd", "8c564b",
+                                    "e377c2", "7f7f7f", "bcbd22", "17becf", "000080", "808000",
+                                    "008080", "800000", "ff1493", "00bfff"};
+    constexpr size_t kColours = sizeof colours / sizeof colours[0];
     plot << "plot ";
     int index = 0;
     for (size_t c = 0; c < curves.size(); ++c)
@@ -61,12 +70,13 @@ void DrawCurves(const std::vector<Curve>& curves, const BandSet& bands, const st
                  << bands[b].maxNm << " " << means[b] * cv.scale << "\n\n";
         }
         data << "\n";
-        const char* colour = colours[c % 6];
+        const std::string colour = colours[c % kColours];
+        // Solid, so that each step runs from edge to edge (a dash pattern
+        // ended in a gap short of the band's edge); '#AARRGGBB', 0x90 alpha.
         plot << (c ? ", \\\n     " : "") << "$bandlight_data index " << index
-             << " using 1:2 with lines lw 2 lc rgb '" << colour << "' title "
+             << " using 1:2 with lines lw 2 lc rgb '#" << colour << "' title "
              << GnuplotQuote(cv.name) << ", \\\n     $bandlight_data index " << index + 1
-             << " using 1:2 with lines lw 3 dt 2 lc rgb '" << colour << "' title "
-             << GnuplotQuote(cv.name + " band means");
+             << " using 1:2 with lines lw 6 lc rgb '#90" << colour << "' notitle";
         index += 2;
     }
     plot << "\n";
