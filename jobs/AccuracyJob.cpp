@@ -72,11 +72,12 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
         Point n{m + " (native)", std::max(native, 1e-3), {}};
         for (const ReflectanceSet& set : options.sets)
         {
-            const Filter shippedF{1.0, anyShipped && !FindMethod(m).isReference(), key, "cie"};
+            const Filter shippedF{1.0, anyShipped && !FindMethod(m).isReference(), key,
+                                  PlateSource::CIE};
             p.de.push_back(
                 WorstExposure(result.rows, m, set.name, shippedF, options.exposures).second);
             // The native map is the ideal form itself.
-            const Filter idealF{1.0, false, key, "cie"};
+            const Filter idealF{1.0, false, key, PlateSource::CIE};
             n.de.push_back(
                 WorstExposure(result.rows, m, set.name, idealF, options.exposures).second);
         }
@@ -366,7 +367,8 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
 
     const size_t pairs = PairCount(options);
     reporter.progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
-                      std::to_string(pairs) + (pairs == 1 ? " illuminant pair x " : " illuminant pairs x ") +
+                      std::to_string(pairs) +
+                      (pairs == 1 ? " illuminant pair x " : " illuminant pairs x ") +
                       std::to_string(options.sets.size()) + " reflectance sets");
     std::mutex mu;
     int lastTenth = -1;
@@ -429,8 +431,7 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
             const std::string& image = r.images[i];
             reporter.progress("accuracy: heat maps of " + image);
             for (HeatmapSummary& h : WriteAccuracyHeatmaps(image, imageOptions, options.methods,
-                                                           r.heatmaps, stems[i], outputs,
-                                                           reporter))
+                                                           r.heatmaps, stems[i], outputs, reporter))
             {
                 h.image = image;
                 result.written.push_back(h.exr);
@@ -469,7 +470,7 @@ std::string AccuracyDocument(const AccuracyResult& result)
                          {"to", r.to},
                          {"set", r.set},
                          {"plates", r.plates},
-                         {"camera", r.source},
+                         {"camera", PlateSourceName(r.source)},
                          {"exposure", r.exposure},
                          {"shipped", r.shipped},
                          {"mean", r.mean},

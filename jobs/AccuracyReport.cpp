@@ -51,15 +51,16 @@ std::string AccuracyReport(const AccuracyResult& result)
                 {
                     continue;  // measured on camera plates below
                 }
-                const Filter idealF{1.0, false, key, "cie"};
+                const Filter idealF{1.0, false, key, PlateSource::CIE};
                 const bool hasShipped = anyShipped && !FindMethod(m).isReference();
-                const Filter shippedF{1.0, hasShipped, key, "cie"};
+                const Filter shippedF{1.0, hasShipped, key, PlateSource::CIE};
                 const Summary ideal = Summarise(rows, m, set.name, idealF);
                 const Summary shipped = Summarise(rows, m, set.name, shippedF);
                 const auto worst = WorstExposure(rows, m, set.name, shippedF, options.exposures);
                 const auto lecture =
                     WorstExposure(rows, m, set.name, shippedF, options.exposures, lecturePairs);
-                const Summary all = Summarise(rows, m, set.name, {-1.0, hasShipped, key, "cie"});
+                const Summary all =
+                    Summarise(rows, m, set.name, {-1.0, hasShipped, key, PlateSource::CIE});
                 // Without shipped forms (--ideal-only) the shipped column is
                 // empty, and the worst exposure is the ideal form's.
                 char shippedMean[16] = "       -";
@@ -68,12 +69,12 @@ std::string AccuracyReport(const AccuracyResult& result)
                     std::snprintf(shippedMean, sizeof shippedMean, "%8.2f", shipped.mean);
                 }
                 char line[320];
-                std::snprintf(
-                    line, sizeof line,
-                    "  %-10s %7.2f %s %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
-                    m.c_str(), ideal.mean, shippedMean, worst.second, Stops(worst.first).c_str(),
-                    all.p95, all.max, all.worst.c_str(), lecture.second,
-                    costAll.count(m) ? Fixed(costAll.at(m), 2).c_str() : "-");
+                std::snprintf(line, sizeof line,
+                              "  %-10s %7.2f %s %8.2f (%-5s)   %6.2f %7.2f   %-26s %8.2f   %10s\n",
+                              m.c_str(), ideal.mean, shippedMean, worst.second,
+                              Stops(worst.first).c_str(), all.p95, all.max, all.worst.c_str(),
+                              lecture.second,
+                              costAll.count(m) ? Fixed(costAll.at(m), 2).c_str() : "-");
                 out << line;
             }
             if (!plates.balanced())
@@ -115,7 +116,7 @@ std::string AccuracyReport(const AccuracyResult& result)
                 out << line;
                 for (const ReflectanceSet& set : options.sets)
                 {
-                    const Filter f{1.0, false, key + "-through-lit-looks", "cie"};
+                    const Filter f{1.0, false, key + "-through-lit-looks", PlateSource::CIE};
                     std::snprintf(line, sizeof line, " %10.2f (%6.2f)",
                                   Summarise(rows, m, set.name, f).mean,
                                   Summarise(rows, m, set.name, f, lecturePairs).mean);
@@ -170,7 +171,7 @@ std::string AccuracyReport(const AccuracyResult& result)
                         continue;
                     }
                     const bool cameraMethod = FindMethod(m).needsCamera;
-                    const auto at = [&](const std::string& source, bool lecture)
+                    const auto at = [&](PlateSource source, bool lecture)
                     {
                         return Summarise(rows, m, set.name, {1.0, false, key, source},
                                          lecture ? lecturePairs : Pairs{})
@@ -180,19 +181,22 @@ std::string AccuracyReport(const AccuracyResult& result)
                     if (cameraMethod)
                     {
                         std::snprintf(line, sizeof line, "  %-16s %18s %18s %18s %8.2f (%6.2f)\n",
-                                      m.c_str(), "-", "-", "-", at("camera-daylight-idt", false),
-                                      at("camera-daylight-idt", true));
+                                      m.c_str(), "-", "-", "-",
+                                      at(PlateSource::CAMERA_DAYLIGHT_IDT, false),
+                                      at(PlateSource::CAMERA_DAYLIGHT_IDT, true));
                     }
                     else
                     {
-                        std::snprintf(
-                            line, sizeof line,
-                            "  %-16s %8.2f (%6.2f) %8.2f (%6.2f) %+8.2f (%+6.2f) "
-                            "%8.2f (%6.2f)\n",
-                            m.c_str(), at("cie", false), at("cie", true), at("camera", false),
-                            at("camera", true), at("camera", false) - at("cie", false),
-                            at("camera", true) - at("cie", true), at("camera-daylight-idt", false),
-                            at("camera-daylight-idt", true));
+                        std::snprintf(line, sizeof line,
+                                      "  %-16s %8.2f (%6.2f) %8.2f (%6.2f) %+8.2f (%+6.2f) "
+                                      "%8.2f (%6.2f)\n",
+                                      m.c_str(), at(PlateSource::CIE, false),
+                                      at(PlateSource::CIE, true), at(PlateSource::CAMERA, false),
+                                      at(PlateSource::CAMERA, true),
+                                      at(PlateSource::CAMERA, false) - at(PlateSource::CIE, false),
+                                      at(PlateSource::CAMERA, true) - at(PlateSource::CIE, true),
+                                      at(PlateSource::CAMERA_DAYLIGHT_IDT, false),
+                                      at(PlateSource::CAMERA_DAYLIGHT_IDT, true));
                     }
                     out << line;
                 }

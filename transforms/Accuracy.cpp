@@ -91,7 +91,7 @@ Errors Score(const Judge& judge, const std::vector<Vec3>& predicted,
 
 AccuracyRow MakeRow(const std::string& method, const Light& from, const Light& to,
                     const std::string& set, double exposure, bool shipped, const Errors& e,
-                    const std::string& plates = "lit", const std::string& source = "cie")
+                    const std::string& plates = "lit", PlateSource source = PlateSource::CIE)
 {
     AccuracyRow r;
     r.plates = plates;
@@ -198,6 +198,20 @@ MethodSpec WithPlates(MethodSpec m, const Plates& p, const AccuracyOptions& o)
 
 }  // namespace
 
+const char* PlateSourceName(PlateSource source) noexcept
+{
+    switch (source)
+    {
+        case PlateSource::CAMERA:
+            return "camera";
+        case PlateSource::CAMERA_DAYLIGHT_IDT:
+            return "camera-daylight-idt";
+        case PlateSource::CIE:
+        default:
+            return "cie";
+    }
+}
+
 size_t PairCount(const AccuracyOptions& options)
 {
     return Pairs(options).size();
@@ -250,11 +264,11 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                 // The plates each source delivers (before exposure), per set.
                 struct Source
                 {
-                    std::string name;
+                    PlateSource name;
                     std::vector<std::vector<Vec3>> plate;
                 };
                 std::vector<Source> sources(1);
-                sources[0].name = "cie";
+                sources[0].name = PlateSource::CIE;
                 for (size_t s = 0; s < o.sets.size(); ++s)
                 {
                     sources[0].plate.emplace_back();
@@ -275,7 +289,8 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                     const Mat3 idts[2] = {
                         FitIdt(*o.camera, from.spectrum, working, plates.adaptation, o.observer),
                         FitIdt(*o.camera, daylight, working, plates.adaptation, o.observer)};
-                    const char* names[2] = {"camera", "camera-daylight-idt"};
+                    const PlateSource names[2] = {PlateSource::CAMERA,
+                                                  PlateSource::CAMERA_DAYLIGHT_IDT};
                     for (int k = 0; k < 2; ++k)
                     {
                         Source src{names[k], {}};
@@ -319,7 +334,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                     {
                         // rootpoly-camera is made for the daylight-IDT plates only.
                         const bool cameraMethod = method.entry().needsCamera;
-                        if (cameraMethod && source.name != "camera-daylight-idt")
+                        if (cameraMethod && source.name != PlateSource::CAMERA_DAYLIGHT_IDT)
                         {
                             continue;
                         }
@@ -356,14 +371,14 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                             };
                         };
                         std::vector<Form> forms = {{false, exact(relight), plates.key()}};
-                        if (o.shipped && source.name == "cie")
+                        if (o.shipped && source.name == PlateSource::CIE)
                         {
                             if (PixelBatch shipped = o.shipped(from, to, method))
                             {
                                 forms.push_back({true, asFloat(shipped), plates.key()});
                             }
                         }
-                        if (litLooks && source.name == "cie")
+                        if (litLooks && source.name == PlateSource::CIE)
                         {
                             forms.push_back(
                                 {false, exact(litLooks), plates.key() + "-through-lit-looks"});

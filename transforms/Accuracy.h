@@ -12,6 +12,19 @@
 namespace bandlight
 {
 
+/// Where an accuracy row's plate came from.
+enum class PlateSource
+{
+    CIE,     ///< the colour as the observer sees it
+    CAMERA,  ///< the camera's record through an IDT fitted (rawtoaces' way) for the shooting light
+    /// The camera's record balanced by gains for the shooting light, through
+    /// one IDT fitted for the daylight.
+    CAMERA_DAYLIGHT_IDT,
+};
+
+/// Its name in reports and JSON: "cie", "camera", "camera-daylight-idt".
+const char* PlateSourceName(PlateSource source) noexcept;
+
 /// ΔE00 of one method for one illuminant pair over one reflectance set at
 /// one exposure, against the spectral reference (the remittances rendered
 /// under `to`).
@@ -27,12 +40,8 @@ struct AccuracyRow
     /// "balanced-bradford", where input and reference are both balanced to
     /// the working white and L*a*b* is relative to that white.
     std::string plates = "lit";
-    /// Where the plate came from: "cie" (the colour as the observer sees
-    /// it), "camera" (the camera's record through an IDT fitted the
-    /// rawtoaces way for the shooting light) or "camera-daylight-idt" (its
-    /// record balanced by gains for the shooting light, through one IDT
-    /// fitted for the daylight). The reference is always the CIE truth.
-    std::string source = "cie";
+    /// Where the plate came from; the reference is always the CIE truth.
+    PlateSource source = PlateSource::CIE;
     double mean = 0.0;
     double p95 = 0.0;
     double max = 0.0;

@@ -28,7 +28,7 @@ struct Filter
     double exposure = 1.0;
     bool shipped = false;
     std::string plates = "lit";
-    std::string source = "cie";
+    PlateSource source = PlateSource::CIE;
 };
 
 using Pairs = std::vector<std::pair<std::string, std::string>>;

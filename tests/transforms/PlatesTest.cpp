@@ -54,7 +54,7 @@ CameraSensitivities GaussianCamera(double r, double g, double b, double width)
 }
 
 std::map<std::string, double> MeanBy(const std::vector<AccuracyRow>& rows,
-                                     const std::string& plates, const std::string& source,
+                                     const std::string& plates, PlateSource source,
                                      const std::string& set)
 {
     std::map<std::string, double> sum;
@@ -245,7 +245,7 @@ TEST_CASE("With the CIE observer as the camera, accuracy --camera equals plain a
     std::map<std::string, const AccuracyRow*> cie;
     for (const AccuracyRow& r : rows)
     {
-        if (r.source == "cie")
+        if (r.source == PlateSource::CIE)
         {
             std::ostringstream key;
             key << r.method << r.from << r.to << r.plates << r.exposure;
@@ -259,9 +259,10 @@ TEST_CASE("With the CIE observer as the camera, accuracy --camera equals plain a
         // rootpoly-camera on the daylight-IDT plates against rootpoly on the CIE plates.
         const std::string plain = r.method == "rootpoly-camera" ? "rootpoly" : r.method;
         key << plain << r.from << r.to << r.plates << r.exposure;
-        if (r.source == "camera" || r.method == "rootpoly-camera")
+        if (r.source == PlateSource::CAMERA || r.method == "rootpoly-camera")
         {
-            INFO(r.method << " " << r.from << "->" << r.to << " " << r.plates << " " << r.source);
+            INFO(r.method << " " << r.from << "->" << r.to << " " << r.plates << " "
+                          << PlateSourceName(r.source));
             REQUIRE(cie.count(key.str()));
             CHECK(std::abs(r.mean - cie[key.str()]->mean) < 1e-9);
             CHECK(std::abs(r.max - cie[key.str()]->max) < 1e-9);
@@ -289,9 +290,9 @@ TEST_CASE("Knowing the camera wins back error on daylight-IDT plates", "[transfo
     const std::vector<AccuracyRow> rows = MeasureAccuracy(o);
     for (const std::string& set : {HeldOutTcs().name, std::string("random")})
     {
-        const auto cie = MeanBy(rows, "balanced-cat02", "cie", set);
-        const auto camera = MeanBy(rows, "balanced-cat02", "camera", set);
-        const auto daylight = MeanBy(rows, "balanced-cat02", "camera-daylight-idt", set);
+        const auto cie = MeanBy(rows, "balanced-cat02", PlateSource::CIE, set);
+        const auto camera = MeanBy(rows, "balanced-cat02", PlateSource::CAMERA, set);
+        const auto daylight = MeanBy(rows, "balanced-cat02", PlateSource::CAMERA_DAYLIGHT_IDT, set);
         INFO(set << ": rootpoly cie " << cie.at("rootpoly") << ", camera " << camera.at("rootpoly")
                  << ", daylight IDT " << daylight.at("rootpoly") << ", rootpoly-camera "
                  << daylight.at("rootpoly-camera"));
