@@ -11,27 +11,43 @@
 namespace bandlight
 {
 
+const std::vector<AdaptationEntry>& AdaptationMethods()
+{
+    static const std::vector<AdaptationEntry> methods = {
+        {AdaptationMethod::XYZ_SCALING, "vonkries", {"von-kries", "xyz", "xyz-scaling"}},
+        {AdaptationMethod::BRADFORD, "bradford", {}},
+        {AdaptationMethod::CAT02, "cat02", {}},
+        {AdaptationMethod::SHARP, "sharp", {}},
+    };
+    return methods;
+}
+
 AdaptationMethod ParseAdaptationMethod(const std::string& text)
 {
     std::string t = text;
     std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (t == "vonkries" || t == "von-kries" || t == "xyz" || t == "xyz-scaling")
+    std::string names;
+    for (const AdaptationEntry& e : AdaptationMethods())
     {
-        return AdaptationMethod::XYZ_SCALING;
+        if (t == e.key || std::find(e.aliases.begin(), e.aliases.end(), t) != e.aliases.end())
+        {
+            return e.method;
+        }
+        names += (names.empty() ? "" : ", ") + std::string(e.key);
     }
-    if (t == "bradford")
+    throw Exception("unknown chromatic adaptation '" + text + "' (" + names + ")");
+}
+
+std::string AdaptationName(AdaptationMethod method)
+{
+    for (const AdaptationEntry& e : AdaptationMethods())
     {
-        return AdaptationMethod::BRADFORD;
+        if (e.method == method)
+        {
+            return e.key;
+        }
     }
-    if (t == "cat02")
-    {
-        return AdaptationMethod::CAT02;
-    }
-    if (t == "sharp")
-    {
-        return AdaptationMethod::SHARP;
-    }
-    throw Exception("unknown chromatic adaptation '" + text + "' (vonkries, bradford, cat02, sharp)");
+    throw Exception("adaptation method " + std::to_string(int(method)) + " is not in the table");
 }
 
 Mat3 ConeResponseMatrix(AdaptationMethod method)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "bandlight/spectral/Colorimetry.h"
 
@@ -18,8 +19,24 @@ enum class AdaptationMethod
     SHARP,        ///< spectrally sharpened sensors (Süsstrunk, Holm & Finlayson 2001)
 };
 
-/// "vonkries"/"xyz", "bradford", "cat02", "sharp"; throws Exception otherwise.
+/// One row of the adaptation table: the method, its name in options, files
+/// and look names, and the other spellings it is given by.
+struct AdaptationEntry
+{
+    AdaptationMethod method;
+    const char* key;                   ///< "bradford"
+    std::vector<const char*> aliases;  ///< "von-kries", "xyz" ...
+};
+
+/// Every adaptation method, in the order they are listed to users.
+const std::vector<AdaptationEntry>& AdaptationMethods();
+
+/// "vonkries"/"xyz", "bradford", "cat02", "sharp" (any case); throws
+/// Exception listing the names otherwise.
 AdaptationMethod ParseAdaptationMethod(const std::string& text);
+
+/// The method's key: "vonkries", "bradford", "cat02", "sharp".
+std::string AdaptationName(AdaptationMethod method);
 
 /// The cone-response matrix of a method (XYZ → LMS).
 Mat3 ConeResponseMatrix(AdaptationMethod method);

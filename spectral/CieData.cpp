@@ -42,24 +42,41 @@ MatchingFunctions LoadMatchingFunctions(const std::string& path)
 
 }  // namespace
 
+const std::vector<ObserverEntry>& Observers()
+{
+    static const std::vector<ObserverEntry> observers = {
+        {Observer::CIE1931_2DEG, "1931", {"2", "cie1931", "2deg"}, "CIE 1931 2°"},
+        {Observer::CIE1964_10DEG, "1964", {"10", "cie1964", "10deg"}, "CIE 1964 10°"},
+    };
+    return observers;
+}
+
 Observer ParseObserver(const std::string& text)
 {
     std::string t = text;
     std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (t == "1931" || t == "2" || t == "cie1931" || t == "2deg")
+    std::string keys;
+    for (const ObserverEntry& e : Observers())
     {
-        return Observer::CIE1931_2DEG;
+        if (t == e.key || std::find(e.aliases.begin(), e.aliases.end(), t) != e.aliases.end())
+        {
+            return e.observer;
+        }
+        keys += (keys.empty() ? "" : " or ") + std::string(e.key);
     }
-    if (t == "1964" || t == "10" || t == "cie1964" || t == "10deg")
-    {
-        return Observer::CIE1964_10DEG;
-    }
-    throw Exception("unknown observer '" + text + "' (expected 1931 or 1964)");
+    throw Exception("unknown observer '" + text + "' (expected " + keys + ")");
 }
 
 const char* ObserverName(Observer observer)
 {
-    return observer == Observer::CIE1931_2DEG ? "CIE 1931 2°" : "CIE 1964 10°";
+    for (const ObserverEntry& e : Observers())
+    {
+        if (e.observer == observer)
+        {
+            return e.name;
+        }
+    }
+    return "unknown observer";
 }
 
 const MatchingFunctions& GetMatchingFunctions(Observer observer)

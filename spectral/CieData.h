@@ -17,8 +17,23 @@ enum class Observer
     CIE1964_10DEG,  ///< CIE 1964 10° (CIE 15:2004 Table T.5)
 };
 
-/// "1931" / "1964" (also "2", "10", "cie1931"...); throws Exception otherwise.
+/// One row of the observer table: the observer, its key in options and
+/// files, its other spellings and its name in reports.
+struct ObserverEntry
+{
+    Observer observer;
+    const char* key;                   ///< "1931"
+    std::vector<const char*> aliases;  ///< "2", "cie1931", "2deg"
+    const char* name;                  ///< "CIE 1931 2°"
+};
+
+/// Every observer, in the order they are listed to users.
+const std::vector<ObserverEntry>& Observers();
+
+/// "1931" / "1964" (also "2", "10", "cie1931"..., any case); throws
+/// Exception listing the keys otherwise.
 Observer ParseObserver(const std::string& text);
+/// "CIE 1931 2°", "CIE 1964 10°".
 const char* ObserverName(Observer observer);
 
 /// Colour-matching functions x̄, ȳ, z̄ of an observer, 360–830 nm at 5 nm,

@@ -23,22 +23,6 @@ std::string Lower(std::string s)
 }
 }  // namespace
 
-std::string AdaptationName(AdaptationMethod method)
-{
-    switch (method)
-    {
-        case AdaptationMethod::BRADFORD:
-            return "bradford";
-        case AdaptationMethod::CAT02:
-            return "cat02";
-        case AdaptationMethod::XYZ_SCALING:
-            return "vonkries";
-        case AdaptationMethod::SHARP:
-            return "sharp";
-    }
-    return "cat02";
-}
-
 std::string Plates::key() const
 {
     return balanced() ? "balanced-" + AdaptationName(adaptation) : "lit";

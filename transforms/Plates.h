@@ -53,9 +53,6 @@ struct Plates
 /// throws Exception naming the choices otherwise.
 Plates ParsePlates(const std::string& convention, const std::string& adaptation = defaults::ADAPTATION);
 
-/// "cat02" or "bradford" (other adaptations are not offered for plates).
-std::string AdaptationName(AdaptationMethod method);
-
 /// The balancing matrix in working RGB: a colour seen under `light` (its
 /// white reflector at Y = 1) → the same colour balanced to the working
 /// space's white, M⁻¹ · CAT(W_light → W_working) · M. It maps the light's
