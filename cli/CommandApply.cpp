@@ -8,6 +8,7 @@
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
 #include "bandlight/jobs/ApplyJob.h"
+#include "bandlight/jobs/Defaults.h"
 #include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::cli
@@ -20,7 +21,48 @@ struct ApplyOptions
 {
     jobs::ApplyRequest request;
     RelightOptions relight;
+    std::vector<std::string> lightGroups;  ///< NAME=FROM:TO or NAME=LAYER
 };
+
+/// --light-group NAME=FROM:TO (a change of light) or NAME=LAYER (where a
+/// file names the group otherwise) into the request.
+void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& reporter)
+{
+    for (const std::string& item : o.lightGroups)
+    {
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+        {
+            throw ParameterError("{light_group} takes NAME=FROM:TO (or NAME=LAYER for a group "
+                                 "the file names otherwise), got '" +
+                                 OneLine(item, 80) + "'");
+        }
+        const std::string name = item.substr(0, eq);
+        const std::string value = item.substr(eq + 1);
+        const size_t colon = value.rfind(':');
+        if (colon == std::string::npos)
+        {
+            o.request.lightGroupLayers[name] = value;
+            continue;
+        }
+        if (colon == 0 || colon + 1 == value.size())
+        {
+            throw ParameterError("{light_group} " + OneLine(item, 80) +
+                                 ": give both lights, NAME=FROM:TO");
+        }
+        RelightOptions group = o.relight;
+        group.from = value.substr(0, colon);
+        group.to = value.substr(colon + 1);
+        const CLI::Option* plates = cmd.get_option_no_throw("--plates");
+        if (!plates || plates->count() == 0)
+        {
+            // A render's group holds its own light's cast: lit, unless the
+            // user says the render was balanced.
+            group.plates.plates = defaults::LIGHT_GROUP_PLATES;
+        }
+        o.request.lightGroups.push_back({name, group.relight(reporter)});
+    }
+}
 
 void RunApply(ApplyOptions& o, const CLI::App& cmd)
 {
@@ -36,7 +78,31 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
         throw ParameterError("{look} applies a look of {config} as it is: " + names +
                              " do not apply to it (give the look, or the change of light)");
     }
-    if (o.request.look.empty() && o.relight.given())
+    if (!o.lightGroups.empty())
+    {
+        if (!o.request.look.empty())
+        {
+            throw ParameterError("{look} applies one look to the whole image: {light_group} "
+                                 "does not apply to it (give the change of light per group)");
+        }
+        for (const char* name : {"--from", "--to"})
+        {
+            const CLI::Option* option = cmd.get_option_no_throw(name);
+            if (option && option->count() > 0)
+            {
+                throw ParameterError(std::string(name == std::string("--from") ? "{src}" : "{dst}") +
+                                     " does not apply with {light_group}: each group takes its "
+                                     "own, NAME=FROM:TO");
+            }
+        }
+        AddLightGroups(o, cmd, reporter);
+        if (o.request.lightGroups.empty())
+        {
+            throw ParameterError("{light_group} NAME=LAYER only says where a group is: relight "
+                                 "at least one group with NAME=FROM:TO");
+        }
+    }
+    else if (o.request.look.empty() && o.relight.given())
     {
         o.request.relight = o.relight.relight(reporter);
     }
@@ -72,6 +138,14 @@ void AddApplyCommand(CLI::App& app)
                     "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
                     "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
+    cmd->add_option("--light-group", o->lightGroups,
+                    "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO "
+                    "(repeatable; --method, --working-space and the plates apply to each; "
+                    "--plates defaults to " +
+                        std::string(defaults::LIGHT_GROUP_PLATES) +
+                        " here). The beauty becomes the sum of the groups plus the residual. "
+                        "NAME=LAYER names where a group is when the file's naming is not "
+                        "Blender's, Arnold's or bandlight's (a layer prefix, or r,g,b channels)");
     AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
     cmd->callback([o, cmd] { RunApply(*o, *cmd); });
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/jobs/ApplyJob.h"
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -8,6 +9,7 @@
 
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LightGroups.h"
 #include "bandlight/plugin/OcioTransforms.h"
 #include "bandlight/plugin/SceneLinearEvidence.h"
 #include "bandlight/spectral/Exception.h"
@@ -26,6 +28,170 @@ FrameSetRequest FrameSet(const ApplyRequest& r)
     f.mayReplaceInput = true;
     return f;
 }
+/// The first input of a request that is there: the image, or the first
+/// frame whose input exists ("" when none is).
+std::string FirstExistingInput(const FrameSetRequest& f)
+{
+    std::error_code ec;
+    if (f.frames.empty())
+    {
+        return std::filesystem::is_regular_file(f.input, ec) ? f.input : "";
+    }
+    for (const int frame : ParseFrameRange(f.frames))
+    {
+        const std::string in = ExpandFramePattern(f.input, frame);
+        if (std::filesystem::is_regular_file(in, ec))
+        {
+            return in;
+        }
+    }
+    return "";
+}
+
+/// A change of light as the pixels get it: natively (rootpoly, the
+/// guarded 3×3 of the linear methods) or through its OCIO processor.
+struct RelightForm
+{
+    OCIO::ConstProcessorRcPtr processor;
+    std::function<void(float*, size_t)> native;
+    std::optional<ClampMatrixKernel> kernel;
+    std::string applied;
+
+    BufferWork work(int threads) const
+    {
+        return kernel   ? KernelWork(*kernel, threads)
+               : native ? RgbWork(native, threads)
+                        : ProcessorWork(processor->getOptimizedCPUProcessor(
+                                            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                            OCIO::OPTIMIZATION_DEFAULT),
+                                        threads);
+    }
+};
+
+RelightForm MakeRelightForm(const RelightRequest& relight, Reporter& reporter)
+{
+    RelightForm f;
+    const MethodSpec method = relight.methodSpec(reporter);
+    const Observer observer = ParseObserver(relight.observer);
+    if (method.entry().appliesNatively())
+    {
+        const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
+                                                           relight.working(), observer);
+        f.native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
+        f.applied = LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
+    }
+    else
+    {
+        OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(relight.src, relight.dst, method,
+                                                                relight.working(), observer);
+        f.processor = OCIO::Config::CreateRaw()->getProcessor(t);
+        f.applied = t->getFormatMetadata().getName();
+        // The linear methods: their guarded 3×3, natively.
+        f.kernel = NativeClampMatrix(f.processor);
+    }
+    return f;
+}
+
+/// Each note once for a sequence, the frame's names given as the patterns.
+class FrameNotes
+{
+public:
+    FrameNotes(const ApplyRequest& r, Reporter& reporter) : m_r(r), m_reporter(reporter) {}
+    void add(const std::vector<std::string>& notes, const std::string& in,
+             const std::string& out)
+    {
+        std::lock_guard<std::mutex> lock(m_mu);
+        for (std::string n : notes)
+        {
+            for (const auto& [name, pattern] :
+                 {std::pair{in, m_r.input}, std::pair{out, m_r.output}})
+            {
+                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
+                     at = n.find(name, at + pattern.size()))
+                {
+                    n.replace(at, name.size(), pattern);
+                }
+            }
+            if (m_noted.insert(n).second)
+            {
+                m_reporter.note(n);
+            }
+        }
+    }
+
+private:
+    const ApplyRequest& m_r;
+    Reporter& m_reporter;
+    std::set<std::string> m_noted;
+    std::mutex m_mu;
+};
+
+ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
+{
+    if (r.relight)
+    {
+        throw ParameterError("{light_group} gives each group its own change of light: {src} and "
+                             "{dst} do not apply to it (give NAME=FROM:TO per group)");
+    }
+    ApplyResult result;
+    LightGroupApply apply;
+    apply.mapped = r.lightGroupLayers;
+    ImageColourRequest colour;
+    std::set<std::string> names;
+    std::string applied;
+    bool allNative = true;
+    for (const LightGroupRelight& g : r.lightGroups)
+    {
+        if (g.group.empty())
+        {
+            throw ParameterError("{light_group} takes NAME=FROM:TO: the group's name is empty");
+        }
+        if (!names.insert(g.group).second)
+        {
+            throw ParameterError("{light_group} names the group '" + OneLine(g.group, 80) +
+                                 "' twice");
+        }
+        if (colour.working && colour.working != &g.relight.working())
+        {
+            throw ParameterError("{light_group}: every group is relit in one working space");
+        }
+        colour.working = &g.relight.working();
+        const RelightForm form = MakeRelightForm(g.relight, reporter);
+        allNative = allNative && (form.kernel || form.native);
+        apply.works[g.group] = form.work(r.threads);
+        applied += (applied.empty() ? "" : ", ") + g.group + ": " + form.applied;
+    }
+    if (!r.colorspace.empty())
+    {
+        colour.declared = NamedEncoding(r.colorspace);
+    }
+    result.applied = "light groups (" + applied + ")";
+    result.native = allNative;
+    // The groups checked in the first input's header before any frame: a
+    // group that is not there fails at once (a file of one part; the parts
+    // of a multi-part file are looked at as each frame is read).
+    const std::string first = FirstExistingInput(FrameSet(r));
+    if (!first.empty())
+    {
+        ImageData header;
+        ThrowIfFailed(ImageFiles().read(first, header, false));
+        if (header.parts == 1)
+        {
+            (void)CheckedLightGroups(apply, first, header);
+        }
+    }
+    FrameNotes notes(r, reporter);
+    const FrameRun run = RunFrameSet(
+        FrameSet(r), reporter,
+        [&](const std::string& in, const std::string& out)
+        { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+    return result;
+}
 }  // namespace
 
 ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
@@ -34,6 +200,11 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     {
         throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
                              ", got " + std::to_string(r.threads));
+    }
+    if (!r.look.empty() && !r.lightGroups.empty())
+    {
+        throw ParameterError("{look} applies one look to the whole image: {light_group} does not "
+                             "apply to it (give the change of light per group)");
     }
     if (!r.look.empty() && r.relight)
     {
@@ -101,7 +272,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             kernel = *k;
         }
     }
-    else
+    else if (r.lightGroups.empty())
     {
         if (!r.relight)
         {
@@ -114,25 +285,15 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         {
             colour.declared = NamedEncoding(r.colorspace);
         }
-        const MethodSpec method = relight.methodSpec(reporter);
-        const Observer observer = ParseObserver(relight.observer);
-        if (method.entry().appliesNatively())
-        {
-            const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
-                                                               relight.working(), observer);
-            native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
-            result.applied =
-                LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
-        }
-        else
-        {
-            OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
-                relight.src, relight.dst, method, relight.working(), observer);
-            processor = OCIO::Config::CreateRaw()->getProcessor(t);
-            result.applied = t->getFormatMetadata().getName();
-            // The linear methods: their guarded 3×3, natively.
-            kernel = NativeClampMatrix(processor);
-        }
+        const RelightForm form = MakeRelightForm(relight, reporter);
+        processor = form.processor;
+        native = form.native;
+        kernel = form.kernel;
+        result.applied = form.applied;
+    }
+    else
+    {
+        return ApplyLightGroups(r, reporter);
     }
     const BufferWork work = kernel   ? KernelWork(*kernel, r.threads)
                             : native ? RgbWork(native, r.threads)
@@ -140,30 +301,10 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
                                                          OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
                                                          OCIO::OPTIMIZATION_DEFAULT),
                                                      r.threads);
-    // Each note once for a sequence: the frame's name as the pattern.
     // Frames run on several threads at once (RunFrameSet).
-    std::set<std::string> noted;
-    std::mutex mu;
+    FrameNotes notes(r, reporter);
     const auto applyOne = [&](const std::string& in, const std::string& out)
-    {
-        const std::vector<std::string> notes = ApplyToImage(work, in, out, result.applied, colour);
-        std::lock_guard<std::mutex> lock(mu);
-        for (std::string n : notes)
-        {
-            for (const auto& [name, pattern] : {std::pair{in, r.input}, std::pair{out, r.output}})
-            {
-                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
-                     at = n.find(name, at + pattern.size()))
-                {
-                    n.replace(at, name.size(), pattern);
-                }
-            }
-            if (noted.insert(n).second)
-            {
-                reporter.note(n);
-            }
-        }
-    };
+    { notes.add(ApplyToImage(work, in, out, result.applied, colour), in, out); };
 
     result.native = kernel.has_value() || bool(native);
     const FrameRun run = RunFrameSet(FrameSet(r), reporter, applyOne);
