@@ -4,12 +4,12 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/Commands.h"
-#include "cli/Common.h"
-#include "cli/Diagnostics.h"
 #include "bandlight/jobs/ApplyJob.h"
 #include "bandlight/jobs/Defaults.h"
 #include "bandlight/spectral/Parallel.h"
+#include "cli/Commands.h"
+#include "cli/Common.h"
+#include "cli/Diagnostics.h"
 
 namespace bandlight::cli
 {
@@ -33,9 +33,10 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
         const size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
         {
-            throw ParameterError("{light_group} takes NAME=FROM:TO (or NAME=LAYER for a group "
-                                 "the file names otherwise), got '" +
-                                 OneLine(item, 80) + "'");
+            throw ParameterError(
+                "{light_group} takes NAME=FROM:TO (or NAME=LAYER for a group "
+                "the file names otherwise), got '" +
+                OneLine(item, 80) + "'");
         }
         const std::string name = item.substr(0, eq);
         const std::string value = item.substr(eq + 1);
@@ -82,24 +83,27 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
     {
         if (!o.request.look.empty())
         {
-            throw ParameterError("{look} applies one look to the whole image: {light_group} "
-                                 "does not apply to it (give the change of light per group)");
+            throw ParameterError(
+                "{look} applies one look to the whole image: {light_group} "
+                "does not apply to it (give the change of light per group)");
         }
         for (const char* name : {"--from", "--to"})
         {
             const CLI::Option* option = cmd.get_option_no_throw(name);
             if (option && option->count() > 0)
             {
-                throw ParameterError(std::string(name == std::string("--from") ? "{src}" : "{dst}") +
-                                     " does not apply with {light_group}: each group takes its "
-                                     "own, NAME=FROM:TO");
+                throw ParameterError(
+                    std::string(name == std::string("--from") ? "{src}" : "{dst}") +
+                    " does not apply with {light_group}: each group takes its "
+                    "own, NAME=FROM:TO");
             }
         }
         AddLightGroups(o, cmd, reporter);
         if (o.request.lightGroups.empty())
         {
-            throw ParameterError("{light_group} NAME=LAYER only says where a group is: relight "
-                                 "at least one group with NAME=FROM:TO");
+            throw ParameterError(
+                "{light_group} NAME=LAYER only says where a group is: relight "
+                "at least one group with NAME=FROM:TO");
         }
     }
     else if (o.request.look.empty() && o.relight.given())

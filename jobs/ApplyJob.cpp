@@ -97,8 +97,7 @@ class FrameNotes
 {
 public:
     FrameNotes(const ApplyRequest& r, Reporter& reporter) : m_r(r), m_reporter(reporter) {}
-    void add(const std::vector<std::string>& notes, const std::string& in,
-             const std::string& out)
+    void add(const std::vector<std::string>& notes, const std::string& in, const std::string& out)
     {
         std::lock_guard<std::mutex> lock(m_mu);
         for (std::string n : notes)
@@ -130,8 +129,9 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
 {
     if (r.relight)
     {
-        throw ParameterError("{light_group} gives each group its own change of light: {src} and "
-                             "{dst} do not apply to it (give NAME=FROM:TO per group)");
+        throw ParameterError(
+            "{light_group} gives each group its own change of light: {src} and "
+            "{dst} do not apply to it (give NAME=FROM:TO per group)");
     }
     ApplyResult result;
     LightGroupApply apply;
@@ -203,14 +203,16 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     }
     if (!r.look.empty() && !r.lightGroups.empty())
     {
-        throw ParameterError("{look} applies one look to the whole image: {light_group} does not "
-                             "apply to it (give the change of light per group)");
+        throw ParameterError(
+            "{look} applies one look to the whole image: {light_group} does not "
+            "apply to it (give the change of light per group)");
     }
     if (!r.look.empty() && r.relight)
     {
-        throw ParameterError("{look} applies a look of {config} as it is: {src}, {dst}, {method} "
-                             "and the plates do not apply to it (give the look, or the change "
-                             "of light)");
+        throw ParameterError(
+            "{look} applies a look of {config} as it is: {src}, {dst}, {method} "
+            "and the plates do not apply to it (give the look, or the change "
+            "of light)");
     }
     if (r.look.empty() && !r.config.empty())
     {

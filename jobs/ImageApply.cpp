@@ -168,7 +168,8 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
             // reads as scene-linear, with nothing to say otherwise.
             throw Exception(out + ": " + in + " holds " + encoding.describe() +
                             " code values, which a float format would carry untagged and "
-                            "every host would read as linear: write the same format as " + in +
+                            "every host would read as linear: write the same format as " +
+                            in +
                             " (or convert it to linear EXR first, e.g. oiiotool "
                             "--colorconvert)");
         }
@@ -313,8 +314,9 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                : IdentifyImageEncoding(header, in, *colour.working);
             if (IsDisplayReferred(header) || IsDisplayReferredFile(out))
             {
-                throw Exception(where + ": light groups are scene-linear layers of a render: "
-                                        "read and write them as EXR");
+                throw Exception(where +
+                                ": light groups are scene-linear layers of a render: "
+                                "read and write them as EXR");
             }
             if (encoding.assumed)
             {

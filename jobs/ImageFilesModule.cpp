@@ -262,8 +262,9 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
                 }
                 if (multi && input->seek_subimage(int(p), 1))
                 {
-                    throw Exception(where + ": has MIP levels, which bandlight does not carry: "
-                                            "nothing was written");
+                    throw Exception(where +
+                                    ": has MIP levels, which bandlight does not carry: "
+                                    "nothing was written");
                 }
                 if (!multi && spec.nchannels < 3)
                 {
@@ -299,9 +300,8 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
                 header.part = int(p);
                 header.parts = int(specs.size());
                 header.partName = multi ? PartName(spec, int(p)) : "";
-                process(pixels[p].data(), spec.width,
-                        long(spec.height) * std::max(1, spec.depth), spec.nchannels, rgb,
-                        header);
+                process(pixels[p].data(), spec.width, long(spec.height) * std::max(1, spec.depth),
+                        spec.nchannels, rgb, header);
                 any = true;
                 if (!note.empty())
                 {
