@@ -156,6 +156,18 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
             throw ParameterError("{light_group}: every group is relit in one working space");
         }
         colour.working = &g.relight.working();
+        const Spectrum& a = g.relight.src.spectrum;
+        const Spectrum& b = g.relight.dst.spectrum;
+        if (a.sameGrid(b) && a.values() == b.values())
+        {
+            // The same light: nothing changes, exactly (a fitted method's
+            // identity is only as exact as its fit).
+            (void)g.relight.methodSpec(reporter);
+            applied += (applied.empty() ? "" : ", ") + g.group + ": unchanged (" +
+                       g.relight.src.name + " to " + g.relight.dst.name + ")";
+            apply.works[g.group] = nullptr;  // named, so it must be there; carried
+            continue;
+        }
         const RelightForm form = MakeRelightForm(g.relight, reporter);
         allNative = allNative && (form.kernel || form.native);
         apply.works[g.group] = form.work(r.threads);

@@ -334,6 +334,10 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
         }
         for (const auto& [name, work] : apply.works)
         {
+            if (!work)
+            {
+                continue;  // the same light: carried
+            }
             works[name] = [&, work = work](float* p, long w, long h, int n, const int* rgb)
             {
                 if (in2work)

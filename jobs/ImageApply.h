@@ -65,7 +65,7 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
 /// the file names otherwise (group → layer prefix, or "r,g,b").
 struct LightGroupApply
 {
-    std::map<std::string, BufferWork> works;
+    std::map<std::string, BufferWork> works;  ///< an empty work: named, carried unchanged
     std::map<std::string, std::string> mapped;
 };
 

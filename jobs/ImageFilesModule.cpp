@@ -94,8 +94,7 @@ void WriteParts(const std::string& path, const std::vector<OIIO::ImageSpec>& spe
         }
         throw Exception(PathInMessage(path) + ": this format holds one image, and " +
                         PathInMessage(in) + " has " + std::to_string(specs.size()) +
-                        " parts: the part" + (specs.size() > 2 ? "s " : " ") + names +
-                        " would be lost (write a multi-part EXR)");
+                        " parts: " + names + " would be lost (write a multi-part EXR)");
     }
     // The file itself was created above (or by the caller's OutputSet): what
     // fails here is the format refusing the image, not the file system.
@@ -260,7 +259,7 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
                                     ": holds deep pixels, which bandlight does not carry: "
                                     "nothing was written (flatten it first)");
                 }
-                if (multi && input->seek_subimage(int(p), 1))
+                if (multi && input->spec_dimensions(int(p), 1).width > 0)
                 {
                     throw Exception(where +
                                     ": has MIP levels, which bandlight does not carry: "
