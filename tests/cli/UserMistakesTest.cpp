@@ -4,11 +4,13 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
@@ -79,8 +81,9 @@ TEST_CASE("config --base into the base's own folder is refused and the studio co
           "[cli][mistakes]")
 {
     const std::string studio = Folder("studio");
-    REQUIRE(Bandlight("config --out '" + studio + "' --illuminants A,D65 --methods bradford")
-                .code == 0);
+    REQUIRE(
+        Bandlight("config --out '" + studio + "' --illuminants A,D65 --methods bradford").code ==
+        0);
     const std::string before = Slurp(studio + "/config.ocio");
     const Result r = Bandlight("config --base '" + studio + "/config.ocio' --out '" + studio +
                                "' --illuminants A,F11 --methods cat02");
@@ -115,17 +118,18 @@ TEST_CASE("Empty output paths are refused, never reported as written", "[cli][mi
 TEST_CASE("Options that do not apply are refused, naming them", "[cli][mistakes]")
 {
     const std::string dir = Folder("options");
-    REQUIRE(Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford")
-                .code == 0);
+    REQUIRE(
+        Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford").code ==
+        0);
     REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
                       "/plate.exr'")
                 .code == 0);
     SECTION("apply --look with the options of a change of light")
     {
-        const Result r = Bandlight("apply '" + dir + "/plate.exr' '" + dir +
-                                   "/out.exr' --look bradford_A_to_D65 --config '" + dir +
-                                   "/pkg' --from F11 --to A --method band3 --camera '" + dir +
-                                   "/missing.csv'");
+        const Result r =
+            Bandlight("apply '" + dir + "/plate.exr' '" + dir +
+                      "/out.exr' --look bradford_A_to_D65 --config '" + dir +
+                      "/pkg' --from F11 --to A --method band3 --camera '" + dir + "/missing.csv'");
         CheckOneLine(r, "--look");
         CHECK_THAT(r.err, Contains("--from") && Contains("--method") && Contains("--camera"));
         CHECK(!fs::exists(dir + "/out.exr"));
@@ -146,8 +150,9 @@ TEST_CASE("Options that do not apply are refused, naming them", "[cli][mistakes]
     }
 }
 
-TEST_CASE("lut: the format follows the extension, and a format its extension contradicts is refused",
-          "[cli][mistakes]")
+TEST_CASE(
+    "lut: the format follows the extension, and a format its extension contradicts is refused",
+    "[cli][mistakes]")
 {
     const std::string dir = Folder("lut_format");
     REQUIRE(Bandlight("lut --from A --to D65 --method bradford --size 9 -o '" + dir + "/x.cube'")
@@ -174,7 +179,8 @@ TEST_CASE("Output paths are checked before any work", "[cli][mistakes]")
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         CHECK(r.code == 2);
-        CHECK_THAT(r.err, Contains("nodir/x.json: cannot write there: the folder") && Contains("does not exist"));
+        CHECK_THAT(r.err, Contains("nodir/x.json: cannot write there: the folder") &&
+                              Contains("does not exist"));
         CHECK(s < 5.0);  // the full run takes minutes; the check is immediate
     }
     SECTION("a plot that is neither .png nor .svg")
@@ -192,8 +198,7 @@ TEST_CASE("Images are read from regular files: a device or a FIFO is refused at 
           "[cli][mistakes]")
 {
     const std::string dir = Folder("devices");
-    CheckOneLine(Bandlight("apply /dev/zero '" + dir + "/out.exr' --from A --to D65"),
-                 "a device");
+    CheckOneLine(Bandlight("apply /dev/zero '" + dir + "/out.exr' --from A --to D65"), "a device");
     CheckOneLine(Bandlight("spectral /dev/zero '" + dir + "/out.exr'"), "a device");
     const std::string fifo = dir + "/x.exr";
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
@@ -266,4 +271,94 @@ TEST_CASE("A missing spectrum file is called missing, not an unknown light", "[c
     CheckOneLine(Bandlight("xyz --illuminant lamp.csv"), "lamp.csv: no such spectrum file");
     // A name that is neither lists the built-in lights.
     CheckOneLine(Bandlight("xyz --illuminant D66x"), "unknown illuminant");
+}
+
+namespace
+{
+/// A light-group render in Arnold's naming: beauty R, G, B, A and groups
+/// key and fill, 4x3 pixels; `fill` scales the fill group (2: the groups
+/// sum past the beauty), `nan` puts a NaN into the key group.
+std::string ArnoldShot(const std::string& path, float fill = 1.0f, bool nan = false)
+{
+    const std::vector<std::string> names = {
+        "R",           "G",           "B",          "A",          "RGBA_fill.B",
+        "RGBA_fill.G", "RGBA_fill.R", "RGBA_key.B", "RGBA_key.G", "RGBA_key.R"};
+    OIIO::ImageSpec spec(4, 3, int(names.size()), OIIO::TypeDesc::FLOAT);
+    spec.channelnames = names;
+    std::vector<float> px(12 * names.size());
+    for (size_t p = 0; p < 12; ++p)
+    {
+        float* v = &px[p * names.size()];
+        for (int c = 0; c < 3; ++c)
+        {
+            v[6 - c] = fill * 0.2f;
+            v[9 - c] = 0.3f + 0.01f * float(p);
+            v[c] = 0.2f + 0.3f + 0.01f * float(p);
+        }
+        v[3] = 1.0f;
+    }
+    if (nan)
+    {
+        px[5 * names.size() + 8] = std::nanf("");
+    }
+    auto out = OIIO::ImageOutput::create(path);
+    REQUIRE(out);
+    REQUIRE(out->open(path, spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    REQUIRE(out->close());
+    return path;
+}
+}  // namespace
+
+TEST_CASE("apply --light-group: bad input is one line naming the group or file, nothing written",
+          "[cli][mistakes][lightgroups]")
+{
+    const std::string dir = Folder("lightgroups");
+    const std::string shot = ArnoldShot(dir + "/shot.exr");
+    const std::string out = dir + "/out.exr";
+    const std::string apply = "apply '" + shot + "' '" + out + "' ";
+    SECTION("a group the file does not hold")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group rim=A:D65"),
+                     "shot.exr: has no light group 'rim' (it has fill, key)");
+    }
+    SECTION("two groups resolving to the same layer")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group key=A:D65 --light-group rim=RGBA_key"),
+                     "light groups 'key' and 'rim' resolve to the same channel");
+    }
+    SECTION("groups that are no partition of the beauty")
+    {
+        const std::string over = ArnoldShot(dir + "/over.exr", 2.0f);
+        CheckOneLine(Bandlight("apply '" + over + "' '" + out + "' --light-group key=A:D65"),
+                     "over.exr: the light groups sum to more than the beauty at pixel (0, 0)");
+    }
+    SECTION("NaN in a group")
+    {
+        const std::string nan = ArnoldShot(dir + "/nan.exr", 1.0f, true);
+        CheckOneLine(Bandlight("apply '" + nan + "' '" + out + "' --light-group fill=F11:D65"),
+                     "nan.exr: light group 'key' is NaN at pixel (1, 1)");
+    }
+    SECTION("--light-group with --look, or with --from")
+    {
+        REQUIRE(Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford")
+                    .code == 0);
+        CheckOneLine(Bandlight(apply + "--look bradford_A_to_D65 --config '" + dir +
+                               "/pkg' --light-group key=A:D65"),
+                     "--look applies one look to the whole image: --light-group does not apply");
+        CheckOneLine(Bandlight(apply + "--from A --to D65 --light-group key=A:D65"),
+                     "--from does not apply with --light-group");
+    }
+    SECTION("a malformed --light-group")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group key"), "--light-group takes NAME=FROM:TO");
+        CheckOneLine(Bandlight(apply + "--light-group key=A:"), "give both lights");
+    }
+    CHECK_FALSE(fs::exists(out));
+    // The good run: relit, the beauty the sum.
+    const Result ok = Bandlight(apply + "--light-group key=A:D65 --method rootpoly");
+    INFO(ok.err);
+    CHECK(ok.code == 0);
+    CHECK_THAT(ok.err, Contains("2 light groups (fill, key), Arnold naming, beauty R, G, B"));
+    CHECK(fs::is_regular_file(out));
 }
