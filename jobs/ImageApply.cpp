@@ -305,6 +305,15 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
         }
         const std::string where = header.partName.empty() ? in : in + ", " + header.partName;
         notes.push_back(where + ": " + layout.describe());
+        if (std::any_of(header.channelNames.begin(), header.channelNames.end(),
+                        [](const std::string& n)
+                        { return n.rfind("S0.", 0) == 0 || n.find(".S0.") != std::string::npos; }))
+        {
+            notes.push_back(where +
+                            ": its spectral channels are carried as they were, under the old "
+                            "lights (the spectral command relights them exactly, with "
+                            "{light_group})");
+        }
         std::map<std::string, LightGroupWork> works;
         OCIO::ConstCPUProcessorRcPtr in2work, work2out;
         if (colour.working)

@@ -225,6 +225,25 @@ LightGroupLayout FindLightGroups(const std::string& file,
         }
         out.groups.push_back(g);
     }
+    // bandlight's groups in the order its header lists them (the scene's).
+    std::vector<std::string> order;
+    if (const auto a = attributes.find(LIGHT_GROUPS_ATTRIBUTE); a != attributes.end())
+    {
+        for (size_t at = 0; at <= a->second.size();)
+        {
+            const size_t comma = std::min(a->second.find(',', at), a->second.size());
+            order.push_back(a->second.substr(at, comma - at));
+            at = comma + 1;
+        }
+    }
+    const auto rank = [&](const LightGroupLayer& g)
+    {
+        const auto i = std::find(order.begin(), order.end(), g.name);
+        return g.naming == LightGroupNaming::BANDLIGHT ? size_t(i - order.begin()) : order.size();
+    };
+    std::stable_sort(out.groups.begin(), out.groups.end(),
+                     [&](const LightGroupLayer& a, const LightGroupLayer& b)
+                     { return rank(a) < rank(b); });
     if (out.groups.empty())
     {
         throw Exception(file +
