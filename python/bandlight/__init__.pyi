@@ -220,6 +220,13 @@ def relight(image: npt.ArrayLike, src: LightLike, dst: LightLike, method: str = 
             out: Optional[Float32Array] = None,
             plates: str = "balanced", adaptation: str = "cat02",
             camera: Optional[StrPath] = None, camera_idt: str = "D55") -> Float32Array: ...
+def relight_light_groups(groups: Mapping[str, npt.ArrayLike],
+                         changes: Mapping[str, Tuple[LightLike, LightLike]], *,
+                         beauty: Optional[npt.ArrayLike] = None, method: str = "bradford",
+                         working_space: str = "acescg", observer: ObserverLike = "1931",
+                         training: Optional[RemittancesLike] = None, plates: str = "lit",
+                         adaptation: str = "cat02", camera: Optional[StrPath] = None,
+                         camera_idt: str = "D55", threads: int = 0) -> Dict[str, Any]: ...
 
 # --- jobs ------------------------------------------------------------------------
 

@@ -686,3 +686,54 @@ TEST_CASE(
         }
     }
 }
+
+TEST_CASE("render --light-groups in band and N-band mode: beauty = Σ groups in the file",
+          "[jobs][lightgroups][render]")
+{
+    const std::string dir = Fresh("bandrender");
+    for (const std::string& mode : {"band3", "band6"})
+    {
+        INFO(mode);
+        RenderRequest r;
+        r.scene = std::string(SCENES_DIR) + "/two_lights.yaml";
+        r.mode = mode;
+        r.lightGroups = true;
+        r.preview = false;
+        r.out = dir + "/" + mode + ".exr";
+        const RenderResult result = MakeRender(r);
+        const Exr::Part file = ReadExr(r.out)[0];
+        CHECK(file.spec.get_string_attribute(LIGHT_GROUPS_ATTRIBUTE) == "key,fill");
+        CHECK(file.spec.nchannels == 9);
+        // The beauty is what a render without groups gives, to float rounding.
+        RenderRequest plain = r;
+        plain.lightGroups = false;
+        plain.out.clear();
+        const std::vector<float> whole = MakeRender(plain).image.pixels;
+        const double peak = MaxAbs(whole);
+        REQUIRE(peak > 0.0);
+        double worstSum = 0.0, worstWhole = 0.0;
+        for (size_t p = 0; p < file.count(); ++p)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                const std::string ch(1, "RGB"[c]);
+                worstSum = std::max(worstSum, std::abs(double(file.at(p, ch)) -
+                                                       file.at(p, "key." + ch) -
+                                                       file.at(p, "fill." + ch)));
+                worstWhole =
+                    std::max(worstWhole, std::abs(double(file.at(p, ch)) - whole[3 * p + size_t(c)]));
+                CHECK(result.image.pixels[3 * p + size_t(c)] == file.at(p, ch));
+            }
+        }
+        CHECK(worstSum <= 1e-6 * peak);
+        CHECK(worstWhole <= 1e-5 * peak);
+        // Each group lights only its part: the key's light is warm (A).
+        double keyR = 0.0, keyB = 0.0;
+        for (size_t p = 0; p < file.count(); ++p)
+        {
+            keyR += file.at(p, "key.R");
+            keyB += file.at(p, "key.B");
+        }
+        CHECK(keyR > 1.5 * keyB);
+    }
+}
