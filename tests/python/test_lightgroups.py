@@ -66,3 +66,20 @@ def test_bad_input_is_refused_naming_the_group():
                                        beauty=beauty)
     with pytest.raises(ValueError, match="same image's layer"):
         bandlight.relight_light_groups({"key": key, "fill": fill[:2]}, {"key": ("A", "D65")})
+
+
+def test_render_and_apply_files_with_light_groups(tmp_path):
+    from conftest import SCENES
+    shot = tmp_path / "shot.exr"
+    result = bandlight.render(SCENES / "two_lights.yaml", out=shot, light_groups=True,
+                              mode="band3", preview=False)
+    assert result["files"] == [str(shot)]
+    relit = tmp_path / "relit.exr"
+    with pytest.warns(bandlight.NoteWarning, match="2 light groups \\(key, fill\\), bandlight"):
+        summary = bandlight.apply(shot, relit, light_groups={"key": ("A", "D65")},
+                                  method="rootpoly")
+    assert "key: rootpoly_A_to_D65" in summary["applied"]
+    assert summary["frames"] == 1 and relit.is_file()
+    with pytest.raises(ValueError, match="has no light group 'rim'"):
+        bandlight.apply(shot, tmp_path / "bad.exr", light_groups={"rim": ("A", "D65")})
+    assert not (tmp_path / "bad.exr").exists()
