@@ -22,7 +22,27 @@ struct ApplyOptions
     jobs::ApplyRequest request;
     RelightOptions relight;
     std::vector<std::string> lightGroups;  ///< NAME=FROM:TO or NAME=LAYER
+    std::string lookInside;                ///< FROM:TO
+    std::string lookOutside;
 };
+
+/// --look-inside / --look-outside FROM:TO as a change of light with the
+/// command's --method, --working-space and plates.
+jobs::RelightRequest SideChange(const ApplyOptions& o, const CLI::App& cmd,
+                                const std::string& option, const std::string& value,
+                                jobs::Reporter& reporter)
+{
+    const size_t colon = value.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == value.size())
+    {
+        throw ParameterError("{" + option + "} takes FROM:TO, got '" + OneLine(value, 80) + "'");
+    }
+    RelightOptions side = o.relight;
+    side.from = value.substr(0, colon);
+    side.to = value.substr(colon + 1);
+    (void)cmd;
+    return side.relight(reporter);
+}
 
 /// --light-group NAME=FROM:TO (a change of light) or NAME=LAYER (where a
 /// file names the group otherwise) into the request.
@@ -79,7 +99,24 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
         throw ParameterError("{look} applies a look of {config} as it is: " + names +
                              " do not apply to it (give the look, or the change of light)");
     }
-    if (!o.lightGroups.empty())
+    if (!o.request.matte.empty() || !o.lookInside.empty() || !o.lookOutside.empty())
+    {
+        if (!o.request.look.empty() || !o.lightGroups.empty() || o.relight.given())
+        {
+            throw ParameterError(
+                "{matte} relights each side with its own change of light: "
+                "{look}, {src}/{dst} and {light_group} do not apply to it");
+        }
+        if (o.request.matte.empty() || o.lookInside.empty() || o.lookOutside.empty())
+        {
+            throw ParameterError(
+                "give {matte=}MATTE.exr[:CHANNEL] with {look_inside=}FROM:TO "
+                "and {look_outside=}FROM:TO");
+        }
+        o.request.insideRelight = SideChange(o, cmd, "look_inside", o.lookInside, reporter);
+        o.request.outsideRelight = SideChange(o, cmd, "look_outside", o.lookOutside, reporter);
+    }
+    else if (!o.lightGroups.empty())
     {
         if (!o.request.look.empty())
         {
@@ -150,6 +187,15 @@ void AddApplyCommand(CLI::App& app)
                         " here). The beauty becomes the sum of the groups plus the residual. "
                         "NAME=LAYER names where a group is when the file's naming is not "
                         "Blender's, Arnold's or bandlight's (a layer prefix, or r,g,b channels)");
+    cmd->add_option("--matte", r.matte,
+                    "A matte (MATTE.exr, or MATTE.exr:CHANNEL; default its A, Y or only "
+                    "channel) for a plate lit by two lights: --look-inside relights where the "
+                    "matte is 1, --look-outside where it is 0, mixed by it between");
+    cmd->add_option("--look-inside", o->lookInside,
+                    "With --matte: the change of light inside the matte, FROM:TO (--method "
+                    "and the plates apply)");
+    cmd->add_option("--look-outside", o->lookOutside,
+                    "With --matte: the change of light outside the matte, FROM:TO");
     AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
     cmd->callback([o, cmd] { RunApply(*o, *cmd); });
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/jobs/ApplyJob.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -204,6 +206,187 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
     result.sequence = run.sequence;
     return result;
 }
+/// A matte's channel as weights in 0..1, one per pixel.
+struct Matte
+{
+    std::string path;
+    std::string channel;
+    ImageData image;
+    std::vector<float> weights;
+};
+
+Matte ReadMatte(const std::string& given, Reporter& reporter)
+{
+    Matte m;
+    m.path = given;
+    // MATTE.exr:channel, unless the whole text names a file.
+    const size_t colon = given.rfind(':');
+    std::error_code ec;
+    if (colon != std::string::npos && !std::filesystem::exists(given, ec) &&
+        given.find('/', colon) == std::string::npos)
+    {
+        m.path = given.substr(0, colon);
+        m.channel = given.substr(colon + 1);
+    }
+    CheckImageInput(m.path);
+    ThrowIfFailed(ImageFiles().read(m.path, m.image, true));
+    const std::vector<std::string>& names = m.image.channelNames;
+    int index = -1;
+    if (!m.channel.empty())
+    {
+        const auto at = std::find(names.begin(), names.end(), m.channel);
+        if (at == names.end())
+        {
+            throw Exception(m.path + ": the matte has no channel '" + OneLine(m.channel, 80) + "'");
+        }
+        index = int(at - names.begin());
+    }
+    else
+    {
+        for (const char* name : {"A", "Y"})
+        {
+            const auto at = std::find(names.begin(), names.end(), name);
+            if (at != names.end())
+            {
+                index = int(at - names.begin());
+                break;
+            }
+        }
+        if (index < 0 && names.size() == 1)
+        {
+            index = 0;
+        }
+        if (index < 0)
+        {
+            throw Exception(m.path + ": the matte has no channel A or Y and " +
+                            std::to_string(names.size()) +
+                            " channels: name the one to use, {matte=}MATTE.exr:CHANNEL");
+        }
+        m.channel = names[size_t(index)];
+    }
+    const size_t count = size_t(m.image.width) * size_t(m.image.height);
+    m.weights.resize(count);
+    size_t clamped = 0;
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float v = m.image.pixels[p * size_t(m.image.channels) + size_t(index)];
+        if (!std::isfinite(v))
+        {
+            throw Exception(m.path + ": matte channel '" + m.channel + "' is " +
+                            (std::isnan(v) ? "NaN" : "infinite") + " at pixel (" +
+                            std::to_string(p % size_t(m.image.width)) + ", " +
+                            std::to_string(p / size_t(m.image.width)) + ")");
+        }
+        m.weights[p] = std::clamp(v, 0.0f, 1.0f);
+        clamped += m.weights[p] != v ? 1 : 0;
+    }
+    if (clamped > 0)
+    {
+        reporter.note(m.path + ": " + std::to_string(clamped) + " matte values outside 0-1 " +
+                      "taken as 0 or 1");
+    }
+    m.image.pixels.clear();
+    return m;
+}
+
+/// Throws Exception when the matte does not cover `in`'s data window exactly.
+void CheckMatteFits(const Matte& m, const std::string& in, const ImageData& header)
+{
+    const auto window = [](const ImageData& d)
+    {
+        return std::to_string(d.width) + "x" + std::to_string(d.height) + " at (" +
+               std::to_string(d.x) + ", " + std::to_string(d.y) + ")";
+    };
+    if (m.image.width != header.width || m.image.height != header.height || m.image.x != header.x ||
+        m.image.y != header.y)
+    {
+        throw Exception(m.path + ": the matte's data window is " + window(m.image) + ", " +
+                        PathInMessage(in) + "'s " + window(header) +
+                        ": a matte must cover the image pixel for pixel");
+    }
+}
+
+ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
+{
+    if (r.matte.empty() || !r.insideRelight || !r.outsideRelight)
+    {
+        throw ParameterError(
+            "{matte=}MATTE.exr[:CHANNEL] takes a change of light inside the "
+            "matte and one outside it: give {matte}, {look_inside} and "
+            "{look_outside}");
+    }
+    if (r.relight || !r.look.empty() || !r.lightGroups.empty())
+    {
+        throw ParameterError(
+            "{matte} relights each side with its own change of light: {look}, "
+            "{src}/{dst} and {light_group} do not apply to it");
+    }
+    if (&r.insideRelight->working() != &r.outsideRelight->working())
+    {
+        throw ParameterError("{matte}: both sides are relit in one working space");
+    }
+    const Matte matte = ReadMatte(r.matte, reporter);
+    const std::string first = FirstExistingInput(FrameSet(r));
+    if (!first.empty())
+    {
+        ImageData header;
+        ThrowIfFailed(ImageFiles().read(first, header, false));
+        CheckMatteFits(matte, first, header);
+    }
+    const RelightForm inside = MakeRelightForm(*r.insideRelight, reporter);
+    const RelightForm outside = MakeRelightForm(*r.outsideRelight, reporter);
+    const BufferWork in = inside.work(r.threads);
+    const BufferWork out = outside.work(r.threads);
+    const std::vector<float>& m = matte.weights;
+    // out = m·inside(pixel) + (1 − m)·outside(pixel), R, G, B only.
+    const BufferWork mixed = [&](float* px, long w, long h, int n, const int* rgb)
+    {
+        if (size_t(w) * size_t(h) != m.size())
+        {
+            throw Exception(matte.path + ": the matte is " + std::to_string(matte.image.width) +
+                            "x" + std::to_string(matte.image.height) + ", the image " +
+                            std::to_string(w) + "x" + std::to_string(h));
+        }
+        std::vector<float> lit(px, px + size_t(w) * size_t(h) * size_t(n));
+        in(lit.data(), w, h, n, rgb);
+        out(px, w, h, n, rgb);
+        for (size_t p = 0; p < m.size(); ++p)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                float& v = px[p * size_t(n) + size_t(rgb[c])];
+                v = m[p] * lit[p * size_t(n) + size_t(rgb[c])] + (1.0f - m[p]) * v;
+            }
+        }
+    };
+    ImageColourRequest colour;
+    colour.working = &r.insideRelight->working();
+    if (!r.colorspace.empty())
+    {
+        colour.declared = NamedEncoding(r.colorspace);
+    }
+    ApplyResult result;
+    result.applied = "matte " + matte.path + ":" + matte.channel + " (inside: " + inside.applied +
+                     ", outside: " + outside.applied + ")";
+    result.native = (inside.kernel || inside.native) && (outside.kernel || outside.native);
+    FrameNotes notes(r, reporter);
+    const FrameRun run =
+        RunFrameSet(FrameSet(r), reporter,
+                    [&](const std::string& i, const std::string& o)
+                    {
+                        ImageData header;
+                        ThrowIfFailed(ImageFiles().read(i, header, false));
+                        CheckMatteFits(matte, i, header);
+                        notes.add(ApplyToImage(mixed, i, o, result.applied, colour), i, o);
+                    });
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+    return result;
+}
+
 }  // namespace
 
 ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
@@ -286,7 +469,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             kernel = *k;
         }
     }
-    else if (r.lightGroups.empty())
+    else if (r.lightGroups.empty() && r.matte.empty() && !r.insideRelight && !r.outsideRelight)
     {
         if (!r.relight)
         {
@@ -305,9 +488,13 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         kernel = form.kernel;
         result.applied = form.applied;
     }
-    else
+    else if (!r.lightGroups.empty())
     {
         return ApplyLightGroups(r, reporter);
+    }
+    else
+    {
+        return ApplyMatte(r, reporter);
     }
     const BufferWork work = kernel   ? KernelWork(*kernel, r.threads)
                             : native ? RgbWork(native, r.threads)

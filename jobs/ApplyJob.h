@@ -43,6 +43,13 @@ struct ApplyRequest
     /// channel, part and the metadata kept; groups not named are carried.
     /// Not with `look` or `relight`.
     std::vector<LightGroupRelight> lightGroups;
+    /// A matte for a plate lit by two lights (docs/lightgroups.md): out =
+    /// m·inside(in) + (1−m)·outside(in), m the matte's channel (clamped to
+    /// 0..1), each side its own change of light. The matte's size and data
+    /// window must be the image's. Not with `look`, `relight` or light groups.
+    std::string matte;  ///< MATTE.exr, or MATTE.exr:channel (default A, Y, or its only channel)
+    std::optional<RelightRequest> insideRelight;
+    std::optional<RelightRequest> outsideRelight;
     /// Groups the file names otherwise: group → layer prefix, or "r,g,b".
     std::map<std::string, std::string> lightGroupLayers;
     int threads = 0;  ///< 0: all cores

@@ -39,6 +39,8 @@ struct ImageData
 {
     int width = 0;
     int height = 0;
+    int x = 0;  ///< the data window's origin (OpenEXR's dataWindow min)
+    int y = 0;
     int channels = 0;
     std::vector<std::string> channelNames;
     std::vector<std::string> channelTypes;  ///< per channel: "half", "float", "uint8", …

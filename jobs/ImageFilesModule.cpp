@@ -224,6 +224,8 @@ ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
                                                   : spec.metadata_val(p, false);
     }
     image.format = input.format_name();
+    image.x = spec.x;
+    image.y = spec.y;
     return image;
 }
 

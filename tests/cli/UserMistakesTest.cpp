@@ -349,6 +349,24 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
         CheckOneLine(Bandlight(apply + "--from A --to D65 --light-group key=A:D65"),
                      "--from does not apply with --light-group");
     }
+    SECTION("a matte of another size than the plate")
+    {
+        const std::vector<std::string> names = {"A"};
+        OIIO::ImageSpec spec(5, 3, 1, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = names;
+        const std::vector<float> ones(15, 1.0f);
+        auto matte = OIIO::ImageOutput::create(dir + "/matte.exr");
+        REQUIRE(matte);
+        REQUIRE(matte->open(dir + "/matte.exr", spec));
+        REQUIRE(matte->write_image(OIIO::TypeDesc::FLOAT, ones.data()));
+        REQUIRE(matte->close());
+        CheckOneLine(Bandlight(apply + "--matte '" + dir +
+                               "/matte.exr' --look-inside A:D65 --look-outside F11:D65"),
+                     "matte.exr: the matte's data window is 5x3 at (0, 0)");
+        CheckOneLine(Bandlight(apply + "--matte '" + dir + "/matte.exr' --look-inside A:D65"),
+                     "give --matte MATTE.exr[:CHANNEL] with --look-inside FROM:TO and "
+                     "--look-outside FROM:TO");
+    }
     SECTION("a malformed --light-group")
     {
         CheckOneLine(Bandlight(apply + "--light-group key"), "--light-group takes NAME=FROM:TO");

@@ -83,8 +83,8 @@ struct PartSpec
 {
     std::vector<std::string> channels;
     std::function<float(size_t, size_t)> value;
-    std::string name;
-    std::map<std::string, std::string> attributes;
+    std::string name = "";
+    std::map<std::string, std::string> attributes = {};
 };
 
 void WriteExr(const std::string& path, int width, int height, const std::vector<PartSpec>& parts)
@@ -717,11 +717,11 @@ TEST_CASE("render --light-groups in band and N-band mode: beauty = Σ groups in 
             for (int c = 0; c < 3; ++c)
             {
                 const std::string ch(1, "RGB"[c]);
-                worstSum = std::max(worstSum, std::abs(double(file.at(p, ch)) -
-                                                       file.at(p, "key." + ch) -
-                                                       file.at(p, "fill." + ch)));
-                worstWhole =
-                    std::max(worstWhole, std::abs(double(file.at(p, ch)) - whole[3 * p + size_t(c)]));
+                worstSum =
+                    std::max(worstSum, std::abs(double(file.at(p, ch)) - file.at(p, "key." + ch) -
+                                                file.at(p, "fill." + ch)));
+                worstWhole = std::max(worstWhole,
+                                      std::abs(double(file.at(p, ch)) - whole[3 * p + size_t(c)]));
                 CHECK(result.image.pixels[3 * p + size_t(c)] == file.at(p, ch));
             }
         }
@@ -736,4 +736,52 @@ TEST_CASE("render --light-groups in band and N-band mode: beauty = Σ groups in 
         }
         CHECK(keyR > 1.5 * keyB);
     }
+}
+
+TEST_CASE("A matte mixes two changes of light: m inside, 1 - m outside",
+          "[jobs][lightgroups][matte]")
+{
+    const std::string dir = Fresh("matte");
+    const std::string plate = dir + "/plate.exr";
+    const auto colour = [](size_t p, size_t c)
+    { return 0.1f + 0.02f * float(p) + 0.1f * float(c); };
+    WriteExr(
+        plate, 6, 4,
+        {{{"R", "G", "B", "A"}, [&](size_t p, size_t c) { return c == 3 ? 1.0f : colour(p, c); }}});
+    // A ramp from 0 to 1 across, with one value past 1 (taken as 1).
+    const auto m = [](size_t p) { return std::min(1.0f, float(p % 6) / 5.0f); };
+    WriteExr(dir + "/matte.exr", 6, 4, {{{"Y", "window"}, [&](size_t p, size_t c) {
+                                             return c == 1 ? (p % 6 == 5 ? 1.5f : m(p)) : 0.0f;
+                                         }}});
+    ApplyRequest r;
+    r.input = plate;
+    r.output = dir + "/out.exr";
+    r.matte = dir + "/matte.exr:window";
+    r.insideRelight = Change("D65", "A", "bradford");
+    r.outsideRelight = Change("A", "D65", "bradford");
+    const ApplyResult result = ApplyImages(r);
+    CHECK_THAT(result.applied, Contains("matte.exr:window (inside: bradford_D65_to_A"));
+    const Exr::Part out = ReadExr(r.output)[0];
+    const Relighter inside = Change("D65", "A", "bradford").relighter();
+    const Relighter outside = Change("A", "D65", "bradford").relighter();
+    for (size_t p = 0; p < 24; ++p)
+    {
+        const Vec3 v(colour(p, 0), colour(p, 1), colour(p, 2));
+        const Vec3 expected =
+            double(m(p)) * inside.apply(v) + (1.0 - double(m(p))) * outside.apply(v);
+        CHECK(out.at(p, "R") == Approx(expected.x()).epsilon(1e-5));
+        CHECK(out.at(p, "B") == Approx(expected.z()).epsilon(1e-5));
+        CHECK(out.at(p, "A") == 1.0f);
+    }
+    // A matte of another size, and a channel it does not have, are refused.
+    WriteExr(dir + "/small.exr", 5, 4, {{{"A"}, [](size_t, size_t) { return 1.0f; }}});
+    ApplyRequest bad = r;
+    bad.output = dir + "/bad.exr";
+    bad.matte = dir + "/small.exr";
+    CHECK_THROWS_WITH(ApplyImages(bad), Contains("small.exr: the matte's data window is 5x4 at "
+                                                 "(0, 0), " +
+                                                 plate + "'s 6x4 at (0, 0)"));
+    bad.matte = dir + "/matte.exr:door";
+    CHECK_THROWS_WITH(ApplyImages(bad), Contains("the matte has no channel 'door'"));
+    CHECK_FALSE(fs::exists(bad.output));
 }
