@@ -785,3 +785,34 @@ TEST_CASE("A matte mixes two changes of light: m inside, 1 - m outside",
     CHECK_THROWS_WITH(ApplyImages(bad), Contains("the matte has no channel 'door'"));
     CHECK_FALSE(fs::exists(bad.output));
 }
+
+TEST_CASE("apply --light-group on frame sets: --skip-existing and --keep-going as plain apply",
+          "[jobs][lightgroups][frames]")
+{
+    const std::string dir = Fresh("frames");
+    WriteArnoldShot(dir + "/shot.1001.exr");
+    WriteArnoldShot(dir + "/shot.1002.exr", 2.0f);  // no partition: fails
+    WriteArnoldShot(dir + "/shot.1003.exr");
+    WriteArnoldShot(dir + "/out.1003.exr");  // already done
+    ApplyRequest r;
+    r.input = dir + "/shot.####.exr";
+    r.output = dir + "/out.####.exr";
+    r.frames = "1001-1003";
+    r.skipExisting = true;
+    r.keepGoing = true;
+    r.lightGroups = {{"key", Change("A", "D65", "bradford")}};
+    const ApplyResult result = ApplyImages(r);
+    CHECK(result.sequence);
+    CHECK(result.frames == 1);
+    CHECK(result.skipped == 1);
+    REQUIRE(result.failed.size() == 1);
+    CHECK(result.failed[0].frame == 1002);
+    CHECK_THAT(result.failed[0].error, Contains("sum to more than the beauty"));
+    CHECK(fs::is_regular_file(dir + "/out.1001.exr"));
+    CHECK_FALSE(fs::exists(dir + "/out.1002.exr"));
+    // The skipped frame is the file that was there.
+    CHECK(ReadExr(dir + "/out.1003.exr")[0].at(0, "RGBA_key.R") ==
+          ReadExr(dir + "/shot.1003.exr")[0].at(0, "RGBA_key.R"));
+    CHECK(ReadExr(dir + "/out.1001.exr")[0].at(0, "RGBA_key.R") !=
+          ReadExr(dir + "/shot.1001.exr")[0].at(0, "RGBA_key.R"));
+}
