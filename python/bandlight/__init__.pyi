@@ -348,8 +348,9 @@ def spectral_to_rgb(spectra: npt.ArrayLike, wavelengths: npt.ArrayLike, *,
                     threads: int = 0) -> Float32Array: ...
 def spectral(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
              src: Optional[LightLike] = None, dst: Optional[LightLike] = None,
-             working_space: str = "acescg", plates: str = "balanced",
+             working_space: str = "acescg", plates: Optional[str] = None,
              adaptation: str = "cat02", observer: ObserverLike = "1931",
              channels: Union[Mapping[str, float], StrPath, None] = None,
              kind: str = "emissive", sampling: str = "auto", threads: int = 0,
-             skip_existing: bool = False, keep_going: bool = False) -> Dict[str, Any]: ...
+             skip_existing: bool = False, keep_going: bool = False,
+             light_groups: Optional[Mapping[str, Tuple[LightLike, LightLike]]] = None) -> Dict[str, Any]: ...

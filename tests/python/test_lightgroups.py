@@ -83,3 +83,23 @@ def test_render_and_apply_files_with_light_groups(tmp_path):
     with pytest.raises(ValueError, match="has no light group 'rim'"):
         bandlight.apply(shot, tmp_path / "bad.exr", light_groups={"rim": ("A", "D65")})
     assert not (tmp_path / "bad.exr").exists()
+
+
+def test_spectral_light_groups_exact_and_named(tmp_path):
+    from conftest import SCENES
+    shot = tmp_path / "shot.exr"
+    bandlight.render(SCENES / "two_lights.yaml", out=shot, light_groups=True, spectra=True,
+                     preview=False)
+    same = tmp_path / "same.exr"
+    summary = bandlight.spectral(shot, same, light_groups={"key": ("A", "A"),
+                                                           "fill": ("F11", "F11")})
+    assert "light groups" in summary["applied"]
+    integrated = tmp_path / "integrated.exr"
+    bandlight.spectral(shot, integrated, plates="lit")
+    with pytest.raises(ValueError, match="has no spectral light group 'rim'"):
+        bandlight.spectral(shot, tmp_path / "bad.exr", light_groups={"rim": ("A", "D65")})
+    with pytest.raises(ValueError, match="plates=lit"):
+        bandlight.spectral(shot, tmp_path / "bad.exr", light_groups={"key": ("A", "D65")},
+                           plates="balanced")
+    assert not (tmp_path / "bad.exr").exists()
+    assert same.is_file() and integrated.is_file()
