@@ -2,6 +2,8 @@
 // Light groups: found in every naming, relit per group with the beauty
 // rebuilt as Σ groups + residual, the rest of the file (other channels,
 // metadata, other parts) kept; spectral groups relit exactly.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +18,7 @@
 
 #include "bandlight/jobs/ApplyJob.h"
 #include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LightGroupAccuracy.h"
 #include "bandlight/jobs/LightGroups.h"
 #include "bandlight/jobs/RenderJob.h"
 #include "bandlight/jobs/SpectralJob.h"
@@ -815,4 +818,38 @@ TEST_CASE("apply --light-group on frame sets: --skip-existing and --keep-going a
           ReadExr(dir + "/shot.1003.exr")[0].at(0, "RGBA_key.R"));
     CHECK(ReadExr(dir + "/out.1001.exr")[0].at(0, "RGBA_key.R") !=
           ReadExr(dir + "/shot.1001.exr")[0].at(0, "RGBA_key.R"));
+}
+
+TEST_CASE(
+    "accuracy --light-group: one global look against a look per group, against the exact "
+    "spectral groups",
+    "[jobs][lightgroups][accuracy]")
+{
+    const std::string dir = Fresh("accuracy");
+    RenderRequest render;
+    render.scene = std::string(SCENES_DIR) + "/two_lights.yaml";
+    render.spectra = true;
+    render.lightGroups = true;
+    render.preview = false;
+    render.out = dir + "/shot.exr";
+    MakeRender(render);
+    LightGroupAccuracyRequest r;
+    r.image = render.out;
+    r.methods = {"bradford"};
+    r.changes = {{"key", ResolveIlluminant("A"), ResolveIlluminant("D65")}};
+    CHECK_THROWS_WITH(MeasureLightGroups(r), Contains("light group 'fill' has no change"));
+    r.changes.push_back({"fill", ResolveIlluminant("F11"), ResolveIlluminant("D50")});
+    const LightGroupAccuracyResult result = MeasureLightGroups(r);
+    REQUIRE(result.rows.size() == 1);
+    CHECK(result.pixels > 10000);
+    CHECK(result.noChangeMean > 10.0);
+    CHECK(result.rows[0].globalMean > 2.0);
+    CHECK(result.rows[0].groupsMean < 0.7 * result.rows[0].globalMean);
+    CHECK(result.globalFrom == "key A + fill F11");
+    // Nothing of the run is left in the temporary folder.
+    for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+    {
+        CHECK(e.path().filename().string().rfind(
+                  ".bandlight-lightgroups-" + std::to_string(::getpid()), 0) == std::string::npos);
+    }
 }
