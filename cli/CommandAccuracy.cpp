@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight accuracy`: every method against the spectral answer, and what
 // each costs — one table, one JSON document, one picture (jobs/AccuracyJob).
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
-#include "cli/Commands.h"
-#include "cli/Common.h"
 #include "bandlight/jobs/AccuracyJob.h"
 #include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/LightGroupAccuracy.h"
 #include "bandlight/spectral/RgbSpaces.h"
+#include "cli/Commands.h"
+#include "cli/Common.h"
 
 namespace bandlight::cli
 {
@@ -24,11 +26,81 @@ struct AccuracyCommandOptions
     bool noCost = false;
     std::string from;
     std::string to;
+    std::vector<std::string> lightGroups;  ///< NAME=FROM:TO
     jobs::AccuracyRequest request;
 };
 
+/// `accuracy --image SHOT.exr --light-group NAME=FROM:TO …`: one global look
+/// against a look per group, per method, against the exact spectral groups.
+void RunLightGroupAccuracy(const AccuracyCommandOptions& o, const CLI::App& cmd)
+{
+    for (const char* name : {"--from", "--to", "--illuminants", "--reflectances", "--json",
+                             "--plot", "--heatmaps", "--plates", "--camera"})
+    {
+        const CLI::Option* option = cmd.get_option_no_throw(name);
+        if (option && option->count() > 0)
+        {
+            throw ParameterError(std::string(name) +
+                                 " does not apply with --light-group (each group takes its "
+                                 "lights, NAME=FROM:TO; the groups are lit)");
+        }
+    }
+    if (o.request.images.size() != 1)
+    {
+        throw ParameterError(
+            "--light-group measures one light-group render: give one --image "
+            "(render --spectra --light-groups writes one)");
+    }
+    FrameSetReporter reporter;
+    jobs::LightGroupAccuracyRequest r;
+    r.image = o.request.images[0];
+    r.methods = jobs::SplitList(o.methods);
+    r.workingSpace = o.request.workingSpace;
+    for (const std::string& item : o.lightGroups)
+    {
+        const size_t eq = item.find('=');
+        const size_t colon = item.rfind(':');
+        if (eq == std::string::npos || eq == 0 || colon == std::string::npos || colon < eq + 2 ||
+            colon + 1 == item.size())
+        {
+            throw ParameterError("--light-group takes NAME=FROM:TO, got '" + OneLine(item, 80) +
+                                 "'");
+        }
+        r.changes.push_back({item.substr(0, eq),
+                             jobs::ResolveIlluminant(item.substr(eq + 1, colon - eq - 1), reporter),
+                             jobs::ResolveIlluminant(item.substr(colon + 1), reporter)});
+    }
+    const jobs::LightGroupAccuracyResult res = jobs::MeasureLightGroups(r, reporter);
+    std::cout << "Light groups of " << r.image << ": " << res.pixels
+              << " pixels lit, CIEDE2000 against the spectral groups relit exactly (L*a*b* "
+                 "relative to the brightest pixel's luminance)\n";
+    std::cout << "global look: from " << res.globalFrom << " to " << res.globalTo
+              << ", each light at its group's share of the luminance\n";
+    std::cout << "no change: mean " << Fixed(res.noChangeMean, 2)
+              << "; spectral groups: 0 (the reference), " << Fixed(res.spectralSeconds, 2)
+              << " s\n\n";
+    std::cout << "method       global mean  global p95  per-group mean  per-group p95  "
+                 "per-group/global  global s  per-group s\n";
+    for (const jobs::LightGroupAccuracyRow& row : res.rows)
+    {
+        char line[256];
+        std::snprintf(line, sizeof line, "%-12s %11s %11s %15s %14s %17s %9s %12s\n",
+                      row.method.c_str(), Fixed(row.globalMean, 2).c_str(),
+                      Fixed(row.globalP95, 2).c_str(), Fixed(row.groupsMean, 2).c_str(),
+                      Fixed(row.groupsP95, 2).c_str(),
+                      Fixed(row.groupsMean / row.globalMean, 2).c_str(),
+                      Fixed(row.globalSeconds, 2).c_str(), Fixed(row.groupsSeconds, 2).c_str());
+        std::cout << line;
+    }
+}
+
 void RunAccuracy(AccuracyCommandOptions& o, const CLI::App& cmd)
 {
+    if (!o.lightGroups.empty())
+    {
+        RunLightGroupAccuracy(o, cmd);
+        return;
+    }
     jobs::AccuracyRequest& r = o.request;
     CommandReporter reporter;
     for (const std::string& name : jobs::SplitList(o.illuminants))
@@ -112,6 +184,11 @@ void AddAccuracyCommand(CLI::App& app)
     cmd->add_option("--from", o->from,
                     "With --image: the light of the shot (emissive images are divided by it)");
     cmd->add_option("--to", o->to, "With --image: the light to relight to");
+    cmd->add_option("--light-group", o->lightGroups,
+                    "With one --image of a render with spectral light groups (render --spectra "
+                    "--light-groups): NAME=FROM:TO for every group (repeatable); measures one "
+                    "global look on the beauty against a look per group, for each of "
+                    "--methods, against the exact spectral relight of the groups");
     cmd->add_option("--heatmaps", o->request.heatmaps,
                     "With --image: write a CIEDE2000 map per method into DIR (EXR, and PNG "
                     "with its scale)");

@@ -4,11 +4,12 @@
 #include <iostream>
 #include <memory>
 
+#include "bandlight/jobs/ApplyJob.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/spectral/Parallel.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/spectral/Parallel.h"
 
 namespace bandlight::cli
 {
@@ -20,7 +21,69 @@ struct ApplyOptions
 {
     jobs::ApplyRequest request;
     RelightOptions relight;
+    std::vector<std::string> lightGroups;  ///< NAME=FROM:TO or NAME=LAYER
+    std::string lookInside;                ///< FROM:TO
+    std::string lookOutside;
 };
+
+/// --look-inside / --look-outside FROM:TO as a change of light with the
+/// command's --method, --working-space and plates.
+jobs::RelightRequest SideChange(const ApplyOptions& o, const CLI::App& cmd,
+                                const std::string& option, const std::string& value,
+                                jobs::Reporter& reporter)
+{
+    const size_t colon = value.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == value.size())
+    {
+        throw ParameterError("{" + option + "} takes FROM:TO, got '" + OneLine(value, 80) + "'");
+    }
+    RelightOptions side = o.relight;
+    side.from = value.substr(0, colon);
+    side.to = value.substr(colon + 1);
+    (void)cmd;
+    return side.relight(reporter);
+}
+
+/// --light-group NAME=FROM:TO (a change of light) or NAME=LAYER (where a
+/// file names the group otherwise) into the request.
+void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& reporter)
+{
+    for (const std::string& item : o.lightGroups)
+    {
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+        {
+            throw ParameterError(
+                "{light_group} takes NAME=FROM:TO (or NAME=LAYER for a group "
+                "the file names otherwise), got '" +
+                OneLine(item, 80) + "'");
+        }
+        const std::string name = item.substr(0, eq);
+        const std::string value = item.substr(eq + 1);
+        const size_t colon = value.rfind(':');
+        if (colon == std::string::npos)
+        {
+            o.request.lightGroupLayers[name] = value;
+            continue;
+        }
+        if (colon == 0 || colon + 1 == value.size())
+        {
+            throw ParameterError("{light_group} " + OneLine(item, 80) +
+                                 ": give both lights, NAME=FROM:TO");
+        }
+        RelightOptions group = o.relight;
+        group.from = value.substr(0, colon);
+        group.to = value.substr(colon + 1);
+        const CLI::Option* plates = cmd.get_option_no_throw("--plates");
+        if (!plates || plates->count() == 0)
+        {
+            // A render's group holds its own light's cast: lit, unless the
+            // user says the render was balanced.
+            group.plates.plates = defaults::LIGHT_GROUP_PLATES;
+        }
+        o.request.lightGroups.push_back({name, group.relight(reporter)});
+    }
+}
 
 void RunApply(ApplyOptions& o, const CLI::App& cmd)
 {
@@ -36,7 +99,51 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
         throw ParameterError("{look} applies a look of {config} as it is: " + names +
                              " do not apply to it (give the look, or the change of light)");
     }
-    if (o.request.look.empty() && o.relight.given())
+    if (!o.request.matte.empty() || !o.lookInside.empty() || !o.lookOutside.empty())
+    {
+        if (!o.request.look.empty() || !o.lightGroups.empty() || o.relight.given())
+        {
+            throw ParameterError(
+                "{matte} relights each side with its own change of light: "
+                "{look}, {src}/{dst} and {light_group} do not apply to it");
+        }
+        if (o.request.matte.empty() || o.lookInside.empty() || o.lookOutside.empty())
+        {
+            throw ParameterError(
+                "give {matte=}MATTE.exr[:CHANNEL] with {look_inside=}FROM:TO "
+                "and {look_outside=}FROM:TO");
+        }
+        o.request.insideRelight = SideChange(o, cmd, "look_inside", o.lookInside, reporter);
+        o.request.outsideRelight = SideChange(o, cmd, "look_outside", o.lookOutside, reporter);
+    }
+    else if (!o.lightGroups.empty())
+    {
+        if (!o.request.look.empty())
+        {
+            throw ParameterError(
+                "{look} applies one look to the whole image: {light_group} "
+                "does not apply to it (give the change of light per group)");
+        }
+        for (const char* name : {"--from", "--to"})
+        {
+            const CLI::Option* option = cmd.get_option_no_throw(name);
+            if (option && option->count() > 0)
+            {
+                throw ParameterError(
+                    std::string(name == std::string("--from") ? "{src}" : "{dst}") +
+                    " does not apply with {light_group}: each group takes its "
+                    "own, NAME=FROM:TO");
+            }
+        }
+        AddLightGroups(o, cmd, reporter);
+        if (o.request.lightGroups.empty())
+        {
+            throw ParameterError(
+                "{light_group} NAME=LAYER only says where a group is: relight "
+                "at least one group with NAME=FROM:TO");
+        }
+    }
+    else if (o.request.look.empty() && o.relight.given())
     {
         o.request.relight = o.relight.relight(reporter);
     }
@@ -75,6 +182,23 @@ void AddApplyCommand(CLI::App& app)
                     "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
                     "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
+    cmd->add_option("--light-group", o->lightGroups,
+                    "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO "
+                    "(repeatable; --method, --working-space and the plates apply to each; "
+                    "--plates defaults to " +
+                        std::string(defaults::LIGHT_GROUP_PLATES) +
+                        " here). The beauty becomes the sum of the groups plus the residual. "
+                        "NAME=LAYER names where a group is when the file's naming is not "
+                        "Blender's, Arnold's or bandlight's (a layer prefix, or r,g,b channels)");
+    cmd->add_option("--matte", r.matte,
+                    "A matte (MATTE.exr, or MATTE.exr:CHANNEL; default its A, Y or only "
+                    "channel) for a plate lit by two lights: --look-inside relights where the "
+                    "matte is 1, --look-outside where it is 0, mixed by it between");
+    cmd->add_option("--look-inside", o->lookInside,
+                    "With --matte: the change of light inside the matte, FROM:TO (--method "
+                    "and the plates apply)");
+    cmd->add_option("--look-outside", o->lookOutside,
+                    "With --matte: the change of light outside the matte, FROM:TO");
     AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
     cmd->callback([o, cmd] { RunApply(*o, *cmd); });
 }

@@ -76,6 +76,10 @@ void AddRenderCommand(CLI::App& app)
                   "Also render the spectral reference; write a ΔE00 heat map and a summary");
     cmd->add_flag("--unplanned", r.unplanned,
                   "Evaluate every term per pixel and sample (the reference for the planner)");
+    cmd->add_flag("--light-groups", r.lightGroups,
+                  "One layer per light group beside the beauty: <group>.R/G/B (and "
+                  "<group>.S0.<nm> with --spectra); a light's group is its group: or name: in "
+                  "the scene, else light1, light2, ...; the beauty is their sum");
     cmd->add_flag("--spectra", r.spectra,
                   "Spectral mode: write the spectral radiance into the EXR too, as S0.<nm> "
                   "channels beside R, G, B (Fichet 2021 layout; read by bandlight spectral)");

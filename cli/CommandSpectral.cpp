@@ -4,13 +4,13 @@
 #include <iostream>
 #include <memory>
 
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/SpectralJob.h"
+#include "bandlight/spectral/Parallel.h"
+#include "bandlight/spectral/RgbSpaces.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {
@@ -23,13 +23,34 @@ struct SpectralCommandOptions
     jobs::SpectralRequest request;
     std::string from;
     std::string to;
-    std::vector<std::string> channels;  ///< NAME=NM
+    std::vector<std::string> channels;     ///< NAME=NM
+    std::vector<std::string> lightGroups;  ///< NAME=FROM:TO
 };
 
-void RunSpectral(SpectralCommandOptions& o)
+void RunSpectral(SpectralCommandOptions& o, const CLI::App& cmd)
 {
     FrameSetReporter reporter;
     jobs::SpectralOptions& s = o.request.options;
+    for (const std::string& item : o.lightGroups)
+    {
+        const size_t eq = item.find('=');
+        const size_t colon = item.rfind(':');
+        if (eq == std::string::npos || eq == 0 || colon == std::string::npos || colon < eq + 2 ||
+            colon + 1 == item.size())
+        {
+            throw ParameterError("{light_group} takes NAME=FROM:TO, got '" + OneLine(item, 80) +
+                                 "'");
+        }
+        s.lightGroups.push_back(
+            {item.substr(0, eq),
+             jobs::ResolveIlluminant(item.substr(eq + 1, colon - eq - 1), reporter),
+             jobs::ResolveIlluminant(item.substr(colon + 1), reporter)});
+    }
+    const CLI::Option* plates = cmd.get_option_no_throw("--plates");
+    if (!s.lightGroups.empty() && (!plates || plates->count() == 0))
+    {
+        s.plates.plates = defaults::LIGHT_GROUP_PLATES;
+    }
     if (!o.from.empty())
     {
         s.from = jobs::ResolveIlluminant(o.from, reporter);
@@ -103,7 +124,14 @@ void AddSpectralCommand(CLI::App& app)
         ->check(CLI::IsMember({"auto", "points", "buckets"}, CLI::ignore_case))
         ->capture_default_str();
     AddFrameSetOptions(*cmd, r.files.frames, r.files.skipExisting, r.files.keepGoing, r.threads);
-    cmd->callback([o] { RunSpectral(*o); });
+    cmd->add_option("--light-group", o->lightGroups,
+                    "Relight one spectral light group (<group>.S0.<nm> channels, as render "
+                    "--spectra --light-groups writes them) exactly: NAME=FROM:TO (repeatable; "
+                    "groups not named and the residual are integrated as they are; --plates "
+                    "defaults to " +
+                        std::string(defaults::LIGHT_GROUP_PLATES) +
+                        " here). Writes the beauty and each group's R, G, B");
+    cmd->callback([o, cmd] { RunSpectral(*o, *cmd); });
 }
 
 }  // namespace bandlight::cli

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/jobs/ApplyJob.h"
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -8,6 +11,7 @@
 
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LightGroups.h"
 #include "bandlight/plugin/OcioTransforms.h"
 #include "bandlight/plugin/SceneLinearEvidence.h"
 #include "bandlight/spectral/Exception.h"
@@ -26,6 +30,363 @@ FrameSetRequest FrameSet(const ApplyRequest& r)
     f.mayReplaceInput = true;
     return f;
 }
+/// The first input of a request that is there: the image, or the first
+/// frame whose input exists ("" when none is).
+std::string FirstExistingInput(const FrameSetRequest& f)
+{
+    std::error_code ec;
+    if (f.frames.empty())
+    {
+        return std::filesystem::is_regular_file(f.input, ec) ? f.input : "";
+    }
+    for (const int frame : ParseFrameRange(f.frames))
+    {
+        const std::string in = ExpandFramePattern(f.input, frame);
+        if (std::filesystem::is_regular_file(in, ec))
+        {
+            return in;
+        }
+    }
+    return "";
+}
+
+/// A change of light as the pixels get it: natively (rootpoly, the
+/// guarded 3×3 of the linear methods) or through its OCIO processor.
+struct RelightForm
+{
+    OCIO::ConstProcessorRcPtr processor;
+    std::function<void(float*, size_t)> native;
+    std::optional<ClampMatrixKernel> kernel;
+    std::string applied;
+
+    BufferWork work(int threads) const
+    {
+        return kernel   ? KernelWork(*kernel, threads)
+               : native ? RgbWork(native, threads)
+                        : ProcessorWork(processor->getOptimizedCPUProcessor(
+                                            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                            OCIO::OPTIMIZATION_DEFAULT),
+                                        threads);
+    }
+};
+
+RelightForm MakeRelightForm(const RelightRequest& relight, Reporter& reporter)
+{
+    RelightForm f;
+    const MethodSpec method = relight.methodSpec(reporter);
+    const Observer observer = ParseObserver(relight.observer);
+    if (method.entry().appliesNatively())
+    {
+        const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
+                                                           relight.working(), observer);
+        f.native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
+        f.applied = LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
+    }
+    else
+    {
+        OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(relight.src, relight.dst, method,
+                                                                relight.working(), observer);
+        f.processor = OCIO::Config::CreateRaw()->getProcessor(t);
+        f.applied = t->getFormatMetadata().getName();
+        // The linear methods: their guarded 3×3, natively.
+        f.kernel = NativeClampMatrix(f.processor);
+    }
+    return f;
+}
+
+/// Each note once for a sequence, the frame's names given as the patterns.
+class FrameNotes
+{
+public:
+    FrameNotes(const ApplyRequest& r, Reporter& reporter) : m_r(r), m_reporter(reporter) {}
+    void add(const std::vector<std::string>& notes, const std::string& in, const std::string& out)
+    {
+        std::lock_guard<std::mutex> lock(m_mu);
+        for (std::string n : notes)
+        {
+            for (const auto& [name, pattern] :
+                 {std::pair{in, m_r.input}, std::pair{out, m_r.output}})
+            {
+                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
+                     at = n.find(name, at + pattern.size()))
+                {
+                    n.replace(at, name.size(), pattern);
+                }
+            }
+            if (m_noted.insert(n).second)
+            {
+                m_reporter.note(n);
+            }
+        }
+    }
+
+private:
+    const ApplyRequest& m_r;
+    Reporter& m_reporter;
+    std::set<std::string> m_noted;
+    std::mutex m_mu;
+};
+
+ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
+{
+    if (r.relight)
+    {
+        throw ParameterError(
+            "{light_group} gives each group its own change of light: {src} and "
+            "{dst} do not apply to it (give NAME=FROM:TO per group)");
+    }
+    ApplyResult result;
+    LightGroupApply apply;
+    apply.mapped = r.lightGroupLayers;
+    ImageColourRequest colour;
+    std::set<std::string> names;
+    std::string applied;
+    bool allNative = true;
+    for (const LightGroupRelight& g : r.lightGroups)
+    {
+        if (g.group.empty())
+        {
+            throw ParameterError("{light_group} takes NAME=FROM:TO: the group's name is empty");
+        }
+        if (!names.insert(g.group).second)
+        {
+            throw ParameterError("{light_group} names the group '" + OneLine(g.group, 80) +
+                                 "' twice");
+        }
+        if (colour.working && colour.working != &g.relight.working())
+        {
+            throw ParameterError("{light_group}: every group is relit in one working space");
+        }
+        colour.working = &g.relight.working();
+        const Spectrum& a = g.relight.src.spectrum;
+        const Spectrum& b = g.relight.dst.spectrum;
+        if (a.sameGrid(b) && a.values() == b.values())
+        {
+            // The same light: nothing changes, exactly (a fitted method's
+            // identity is only as exact as its fit).
+            (void)g.relight.methodSpec(reporter);
+            applied += (applied.empty() ? "" : ", ") + g.group + ": unchanged (" +
+                       g.relight.src.name + " to " + g.relight.dst.name + ")";
+            apply.works[g.group] = nullptr;  // named, so it must be there; carried
+            continue;
+        }
+        const RelightForm form = MakeRelightForm(g.relight, reporter);
+        allNative = allNative && (form.kernel || form.native);
+        apply.works[g.group] = form.work(r.threads);
+        applied += (applied.empty() ? "" : ", ") + g.group + ": " + form.applied;
+    }
+    if (!r.colorspace.empty())
+    {
+        colour.declared = NamedEncoding(r.colorspace);
+    }
+    result.applied = "light groups (" + applied + ")";
+    result.native = allNative;
+    // The groups checked in the first input's header before any frame: a
+    // group that is not there fails at once (a file of one part; the parts
+    // of a multi-part file are looked at as each frame is read).
+    const std::string first = FirstExistingInput(FrameSet(r));
+    if (!first.empty())
+    {
+        ImageData header;
+        ThrowIfFailed(ImageFiles().read(first, header, false));
+        if (header.parts == 1)
+        {
+            (void)CheckedLightGroups(apply, first, header);
+        }
+    }
+    FrameNotes notes(r, reporter);
+    const FrameRun run = RunFrameSet(
+        FrameSet(r), reporter,
+        [&](const std::string& in, const std::string& out)
+        { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+    return result;
+}
+/// A matte's channel as weights in 0..1, one per pixel.
+struct Matte
+{
+    std::string path;
+    std::string channel;
+    ImageData image;
+    std::vector<float> weights;
+};
+
+Matte ReadMatte(const std::string& given, Reporter& reporter)
+{
+    Matte m;
+    m.path = given;
+    // MATTE.exr:channel, unless the whole text names a file.
+    const size_t colon = given.rfind(':');
+    std::error_code ec;
+    if (colon != std::string::npos && !std::filesystem::exists(given, ec) &&
+        given.find('/', colon) == std::string::npos)
+    {
+        m.path = given.substr(0, colon);
+        m.channel = given.substr(colon + 1);
+    }
+    CheckImageInput(m.path);
+    ThrowIfFailed(ImageFiles().read(m.path, m.image, true));
+    const std::vector<std::string>& names = m.image.channelNames;
+    int index = -1;
+    if (!m.channel.empty())
+    {
+        const auto at = std::find(names.begin(), names.end(), m.channel);
+        if (at == names.end())
+        {
+            throw Exception(m.path + ": the matte has no channel '" + OneLine(m.channel, 80) + "'");
+        }
+        index = int(at - names.begin());
+    }
+    else
+    {
+        for (const char* name : {"A", "Y"})
+        {
+            const auto at = std::find(names.begin(), names.end(), name);
+            if (at != names.end())
+            {
+                index = int(at - names.begin());
+                break;
+            }
+        }
+        if (index < 0 && names.size() == 1)
+        {
+            index = 0;
+        }
+        if (index < 0)
+        {
+            throw Exception(m.path + ": the matte has no channel A or Y and " +
+                            std::to_string(names.size()) +
+                            " channels: name the one to use, {matte=}MATTE.exr:CHANNEL");
+        }
+        m.channel = names[size_t(index)];
+    }
+    const size_t count = size_t(m.image.width) * size_t(m.image.height);
+    m.weights.resize(count);
+    size_t clamped = 0;
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float v = m.image.pixels[p * size_t(m.image.channels) + size_t(index)];
+        if (!std::isfinite(v))
+        {
+            throw Exception(m.path + ": matte channel '" + m.channel + "' is " +
+                            (std::isnan(v) ? "NaN" : "infinite") + " at pixel (" +
+                            std::to_string(p % size_t(m.image.width)) + ", " +
+                            std::to_string(p / size_t(m.image.width)) + ")");
+        }
+        m.weights[p] = std::clamp(v, 0.0f, 1.0f);
+        clamped += m.weights[p] != v ? 1 : 0;
+    }
+    if (clamped > 0)
+    {
+        reporter.note(m.path + ": " + std::to_string(clamped) + " matte values outside 0-1 " +
+                      "taken as 0 or 1");
+    }
+    m.image.pixels.clear();
+    return m;
+}
+
+/// Throws Exception when the matte does not cover `in`'s data window exactly.
+void CheckMatteFits(const Matte& m, const std::string& in, const ImageData& header)
+{
+    const auto window = [](const ImageData& d)
+    {
+        return std::to_string(d.width) + "x" + std::to_string(d.height) + " at (" +
+               std::to_string(d.x) + ", " + std::to_string(d.y) + ")";
+    };
+    if (m.image.width != header.width || m.image.height != header.height || m.image.x != header.x ||
+        m.image.y != header.y)
+    {
+        throw Exception(m.path + ": the matte's data window is " + window(m.image) + ", " +
+                        PathInMessage(in) + "'s " + window(header) +
+                        ": a matte must cover the image pixel for pixel");
+    }
+}
+
+ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
+{
+    if (r.matte.empty() || !r.insideRelight || !r.outsideRelight)
+    {
+        throw ParameterError(
+            "{matte=}MATTE.exr[:CHANNEL] takes a change of light inside the "
+            "matte and one outside it: give {matte}, {look_inside} and "
+            "{look_outside}");
+    }
+    if (r.relight || !r.look.empty() || !r.lightGroups.empty())
+    {
+        throw ParameterError(
+            "{matte} relights each side with its own change of light: {look}, "
+            "{src}/{dst} and {light_group} do not apply to it");
+    }
+    if (&r.insideRelight->working() != &r.outsideRelight->working())
+    {
+        throw ParameterError("{matte}: both sides are relit in one working space");
+    }
+    const Matte matte = ReadMatte(r.matte, reporter);
+    const std::string first = FirstExistingInput(FrameSet(r));
+    if (!first.empty())
+    {
+        ImageData header;
+        ThrowIfFailed(ImageFiles().read(first, header, false));
+        CheckMatteFits(matte, first, header);
+    }
+    const RelightForm inside = MakeRelightForm(*r.insideRelight, reporter);
+    const RelightForm outside = MakeRelightForm(*r.outsideRelight, reporter);
+    const BufferWork in = inside.work(r.threads);
+    const BufferWork out = outside.work(r.threads);
+    const std::vector<float>& m = matte.weights;
+    // out = m·inside(pixel) + (1 − m)·outside(pixel), R, G, B only.
+    const BufferWork mixed = [&](float* px, long w, long h, int n, const int* rgb)
+    {
+        if (size_t(w) * size_t(h) != m.size())
+        {
+            throw Exception(matte.path + ": the matte is " + std::to_string(matte.image.width) +
+                            "x" + std::to_string(matte.image.height) + ", the image " +
+                            std::to_string(w) + "x" + std::to_string(h));
+        }
+        std::vector<float> lit(px, px + size_t(w) * size_t(h) * size_t(n));
+        in(lit.data(), w, h, n, rgb);
+        out(px, w, h, n, rgb);
+        for (size_t p = 0; p < m.size(); ++p)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                float& v = px[p * size_t(n) + size_t(rgb[c])];
+                v = m[p] * lit[p * size_t(n) + size_t(rgb[c])] + (1.0f - m[p]) * v;
+            }
+        }
+    };
+    ImageColourRequest colour;
+    colour.working = &r.insideRelight->working();
+    if (!r.colorspace.empty())
+    {
+        colour.declared = NamedEncoding(r.colorspace);
+    }
+    ApplyResult result;
+    result.applied = "matte " + matte.path + ":" + matte.channel + " (inside: " + inside.applied +
+                     ", outside: " + outside.applied + ")";
+    result.native = (inside.kernel || inside.native) && (outside.kernel || outside.native);
+    FrameNotes notes(r, reporter);
+    const FrameRun run =
+        RunFrameSet(FrameSet(r), reporter,
+                    [&](const std::string& i, const std::string& o)
+                    {
+                        ImageData header;
+                        ThrowIfFailed(ImageFiles().read(i, header, false));
+                        CheckMatteFits(matte, i, header);
+                        notes.add(ApplyToImage(mixed, i, o, result.applied, colour), i, o);
+                    });
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+    return result;
+}
+
 }  // namespace
 
 ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
@@ -35,11 +396,18 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         throw ParameterError("{threads} must be 0 (all cores) to " + std::to_string(kMaxThreads) +
                              ", got " + std::to_string(r.threads));
     }
+    if (!r.look.empty() && !r.lightGroups.empty())
+    {
+        throw ParameterError(
+            "{look} applies one look to the whole image: {light_group} does not "
+            "apply to it (give the change of light per group)");
+    }
     if (!r.look.empty() && r.relight)
     {
-        throw ParameterError("{look} applies a look of {config} as it is: {src}, {dst}, {method} "
-                             "and the plates do not apply to it (give the look, or the change "
-                             "of light)");
+        throw ParameterError(
+            "{look} applies a look of {config} as it is: {src}, {dst}, {method} "
+            "and the plates do not apply to it (give the look, or the change "
+            "of light)");
     }
     if (r.look.empty() && !r.config.empty())
     {
@@ -101,7 +469,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             kernel = *k;
         }
     }
-    else
+    else if (r.lightGroups.empty() && r.matte.empty() && !r.insideRelight && !r.outsideRelight)
     {
         if (!r.relight)
         {
@@ -114,25 +482,19 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         {
             colour.declared = NamedEncoding(r.colorspace);
         }
-        const MethodSpec method = relight.methodSpec(reporter);
-        const Observer observer = ParseObserver(relight.observer);
-        if (method.entry().appliesNatively())
-        {
-            const auto relighter = std::make_shared<Relighter>(relight.src, relight.dst, method,
-                                                               relight.working(), observer);
-            native = [relighter](float* rgb, size_t n) { relighter->apply(rgb, n, 1); };
-            result.applied =
-                LookName(method.name, relight.src.name, relight.dst.name) + " (native)";
-        }
-        else
-        {
-            OCIO::GroupTransformRcPtr t = IlluminantChangeTransform(
-                relight.src, relight.dst, method, relight.working(), observer);
-            processor = OCIO::Config::CreateRaw()->getProcessor(t);
-            result.applied = t->getFormatMetadata().getName();
-            // The linear methods: their guarded 3×3, natively.
-            kernel = NativeClampMatrix(processor);
-        }
+        const RelightForm form = MakeRelightForm(relight, reporter);
+        processor = form.processor;
+        native = form.native;
+        kernel = form.kernel;
+        result.applied = form.applied;
+    }
+    else if (!r.lightGroups.empty())
+    {
+        return ApplyLightGroups(r, reporter);
+    }
+    else
+    {
+        return ApplyMatte(r, reporter);
     }
     const BufferWork work = kernel   ? KernelWork(*kernel, r.threads)
                             : native ? RgbWork(native, r.threads)
@@ -140,30 +502,10 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
                                                          OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
                                                          OCIO::OPTIMIZATION_DEFAULT),
                                                      r.threads);
-    // Each note once for a sequence: the frame's name as the pattern.
     // Frames run on several threads at once (RunFrameSet).
-    std::set<std::string> noted;
-    std::mutex mu;
+    FrameNotes notes(r, reporter);
     const auto applyOne = [&](const std::string& in, const std::string& out)
-    {
-        const std::vector<std::string> notes = ApplyToImage(work, in, out, result.applied, colour);
-        std::lock_guard<std::mutex> lock(mu);
-        for (std::string n : notes)
-        {
-            for (const auto& [name, pattern] : {std::pair{in, r.input}, std::pair{out, r.output}})
-            {
-                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
-                     at = n.find(name, at + pattern.size()))
-                {
-                    n.replace(at, name.size(), pattern);
-                }
-            }
-            if (noted.insert(n).second)
-            {
-                reporter.note(n);
-            }
-        }
-    };
+    { notes.add(ApplyToImage(work, in, out, result.applied, colour), in, out); };
 
     result.native = kernel.has_value() || bool(native);
     const FrameRun run = RunFrameSet(FrameSet(r), reporter, applyOne);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,13 @@ namespace bandlight::jobs
 
 /// `apply`: a look of a config, or an illuminant change, applied to an
 /// image file or a frame sequence through OpenImageIO.
+/// One light group's change of light (`apply --light-group NAME=FROM:TO`).
+struct LightGroupRelight
+{
+    std::string group;      ///< the group's name, as the file's naming gives it
+    RelightRequest relight;  ///< its lights, method, working space and plates
+};
+
 struct ApplyRequest
 {
     std::string input;   ///< an image, or a pattern such as plate.####.exr
@@ -30,6 +38,20 @@ struct ApplyRequest
     /// Without a look: the illuminant change (rootpoly applies natively,
     /// the other methods through their OCIO transform).
     std::optional<RelightRequest> relight;
+    /// Light groups (docs/lightgroups.md): each named group relit on its
+    /// own, the beauty written as Σ relit groups + residual, every other
+    /// channel, part and the metadata kept; groups not named are carried.
+    /// Not with `look` or `relight`.
+    std::vector<LightGroupRelight> lightGroups;
+    /// A matte for a plate lit by two lights (docs/lightgroups.md): out =
+    /// m·inside(in) + (1−m)·outside(in), m the matte's channel (clamped to
+    /// 0..1), each side its own change of light. The matte's size and data
+    /// window must be the image's. Not with `look`, `relight` or light groups.
+    std::string matte;  ///< MATTE.exr, or MATTE.exr:channel (default A, Y, or its only channel)
+    std::optional<RelightRequest> insideRelight;
+    std::optional<RelightRequest> outsideRelight;
+    /// Groups the file names otherwise: group → layer prefix, or "r,g,b".
+    std::map<std::string, std::string> lightGroupLayers;
     int threads = 0;  ///< 0: all cores
     /// Frames whose output exists are skipped (outputs are written
     /// atomically, so an existing file is a complete one): a re-queued

@@ -19,6 +19,10 @@ inline constexpr const char* PACKAGE_DIR = "bandlight-package";
 
 /// The plate conventions `accuracy` measures: both lit and balanced.
 inline constexpr const char* ACCURACY_PLATES = "both";
+/// What a light group of a render is to `apply --light-group` when the
+/// plates are not given: lit by its own light (a render's group carries its
+/// light's cast; no single white balances a mix of lights).
+inline constexpr const char* LIGHT_GROUP_PLATES = "lit";
 /// Threads of a job: 0 is every core.
 inline constexpr int THREADS = 0;
 /// How messages name a scene or spectrum given as text rather than a file.

@@ -168,7 +168,8 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
             // reads as scene-linear, with nothing to say otherwise.
             throw Exception(out + ": " + in + " holds " + encoding.describe() +
                             " code values, which a float format would carry untagged and "
-                            "every host would read as linear: write the same format as " + in +
+                            "every host would read as linear: write the same format as " +
+                            in +
                             " (or convert it to linear EXR first, e.g. oiiotool "
                             "--colorconvert)");
         }
@@ -227,7 +228,157 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
                 throw;
             }
         },
-        note);
+        note, false);
+    if (thrown)
+    {
+        std::rethrow_exception(thrown);
+    }
+    ThrowIfFailed(status);
+    return notes;
+}
+
+LightGroupLayout CheckedLightGroups(const LightGroupApply& apply, const std::string& file,
+                                    const ImageData& header)
+{
+    const std::string where = header.partName.empty() ? file : file + ", " + header.partName;
+    LightGroupLayout layout =
+        FindLightGroups(where, header.channelNames, header.attributes, apply.mapped);
+    for (const auto& [name, work] : apply.works)
+    {
+        if (!layout.find(name))
+        {
+            std::string have;
+            for (const LightGroupLayer& g : layout.groups)
+            {
+                have += (have.empty() ? "" : ", ") + g.name;
+            }
+            throw Exception(where + ": has no light group '" + OneLine(name, 80) + "' (it has " +
+                            have + ")");
+        }
+    }
+    const auto isHalf = [&](int c)
+    { return size_t(c) < header.channelTypes.size() && header.channelTypes[size_t(c)] == "half"; };
+    for (int c = 0; c < 3; ++c)
+    {
+        layout.half = layout.half || isHalf(layout.beauty[c]);
+        for (const LightGroupLayer& g : layout.groups)
+        {
+            layout.half = layout.half || isHalf(g.rgb[c]);
+        }
+    }
+    return layout;
+}
+
+std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
+                                                 const std::string& in, const std::string& out,
+                                                 const std::string& note,
+                                                 const ImageColourRequest& colour)
+{
+    std::vector<std::string> notes;
+    std::exception_ptr thrown;
+    int relitParts = 0;
+    std::string firstError;
+    const auto process = [&](float* pixels, long width, long height, int channels, const int*,
+                             const ImageData& header)
+    {
+        LightGroupLayout layout;
+        try
+        {
+            layout = CheckedLightGroups(apply, in, header);
+        }
+        catch (const Exception& e)
+        {
+            // A part of a multi-part file without light groups is carried.
+            if (header.parts == 1)
+            {
+                throw;
+            }
+            if (firstError.empty())
+            {
+                firstError = e.what();
+            }
+            if (header.part + 1 == header.parts && relitParts == 0)
+            {
+                throw Exception(firstError);
+            }
+            return;
+        }
+        const std::string where = header.partName.empty() ? in : in + ", " + header.partName;
+        notes.push_back(where + ": " + layout.describe());
+        if (std::any_of(header.channelNames.begin(), header.channelNames.end(),
+                        [](const std::string& n)
+                        { return n.rfind("S0.", 0) == 0 || n.find(".S0.") != std::string::npos; }))
+        {
+            notes.push_back(where +
+                            ": its spectral channels are carried as they were, under the old "
+                            "lights (the spectral command relights them exactly, with "
+                            "{light_group})");
+        }
+        std::map<std::string, LightGroupWork> works;
+        OCIO::ConstCPUProcessorRcPtr in2work, work2out;
+        if (colour.working)
+        {
+            const ImageEncoding encoding = colour.declared
+                                               ? *colour.declared
+                                               : IdentifyImageEncoding(header, in, *colour.working);
+            if (IsDisplayReferred(header) || IsDisplayReferredFile(out))
+            {
+                throw Exception(where +
+                                ": light groups are scene-linear layers of a render: "
+                                "read and write them as EXR");
+            }
+            if (encoding.assumed)
+            {
+                notes.push_back(in + " names no colour space: taken as linear " +
+                                SpaceLabel(*colour.working) + " (say otherwise with {colorspace})");
+            }
+            in2work = EncodingToLinear(encoding, *colour.working);
+            work2out = LinearToEncoding(*colour.working, encoding);
+            if (in2work)
+            {
+                notes.push_back(in + ": " + encoding.describe() + " (" + encoding.evidence +
+                                "), converted to linear " + SpaceLabel(*colour.working) +
+                                " for the work and back");
+            }
+        }
+        for (const auto& [name, work] : apply.works)
+        {
+            if (!work)
+            {
+                continue;  // the same light: carried
+            }
+            works[name] = [&, work = work](float* p, long w, long h, int n, const int* rgb)
+            {
+                if (in2work)
+                {
+                    ApplyToBuffer(in2work, p, w, h, n, rgb, 0);
+                }
+                work(p, w, h, n, rgb);
+                if (work2out)
+                {
+                    ApplyToBuffer(work2out, p, w, h, n, rgb, 0);
+                }
+            };
+        }
+        RelightLightGroups(layout, works, pixels, width, height, channels, where);
+        ++relitParts;
+    };
+    const ImageFilesStatus status = ImageFiles().transform(
+        in, out,
+        [&](float* pixels, long width, long height, int channels, const int* rgb,
+            const ImageData& header)
+        {
+            try
+            {
+                process(pixels, width, height, channels, rgb, header);
+            }
+            catch (...)
+            {
+                thrown = std::current_exception();
+                throw;
+            }
+        },
+        note, true);
     if (thrown)
     {
         std::rethrow_exception(thrown);

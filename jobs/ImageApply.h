@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 
 #include "bandlight/jobs/ImageColour.h"
 #include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/jobs/LightGroups.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/RgbSpaces.h"
 #include "bandlight/transforms/PixelKernels.h"
@@ -58,6 +60,31 @@ struct ImageColourRequest
 std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
                                       const std::string& out, const std::string& note,
                                       const ImageColourRequest& colour);
+
+/// The light groups of an apply: each named group's work, and the groups
+/// the file names otherwise (group → layer prefix, or "r,g,b").
+struct LightGroupApply
+{
+    std::map<std::string, BufferWork> works;  ///< an empty work: named, carried unchanged
+    std::map<std::string, std::string> mapped;
+};
+
+/// The light groups of an image (FindLightGroups) checked against `apply`:
+/// throws Exception naming the file when a group it relights is not there.
+LightGroupLayout CheckedLightGroups(const LightGroupApply& apply, const std::string& file,
+                                    const ImageData& header);
+
+/// Applies each group's work to its layer of an image file and writes the
+/// result with the beauty as Σ relit groups + residual (RelightLightGroups):
+/// every other channel, alpha, the metadata and every other part kept (a
+/// part of a multi-part file without light groups is carried). The pixels
+/// go to the works in `colour.working`, converted from what the file says
+/// and back; a display-referred image is refused. Returns the notes: the
+/// groups found and their naming, what was assumed.
+std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
+                                                 const std::string& in, const std::string& out,
+                                                 const std::string& note,
+                                                 const ImageColourRequest& colour);
 
 /// The clamp and affine 3×3 an optimised OCIO processor consists of, when
 /// it is nothing else: a RangeTransform that only clamps (both bounds

@@ -39,6 +39,8 @@ struct ImageData
 {
     int width = 0;
     int height = 0;
+    int x = 0;  ///< the data window's origin (OpenEXR's dataWindow min)
+    int y = 0;
     int channels = 0;
     std::vector<std::string> channelNames;
     std::vector<std::string> channelTypes;  ///< per channel: "half", "float", "uint8", …
@@ -46,6 +48,12 @@ struct ImageData
     std::map<std::string, std::string> attributes;
     std::string format;         ///< OpenImageIO's format name: "openexr", "png", …
     std::vector<float> pixels;  ///< interleaved, top row first; empty for a header read
+    /// Of a multi-part file (stereo views, AOVs in parts): which part this
+    /// is, of how many, and its name as messages give it ("part 1 ('right')";
+    /// empty for a file of one part).
+    int part = 0;
+    int parts = 1;
+    std::string partName;
 };
 
 /// Processes interleaved float pixels in place: (pixels, width, height,
@@ -74,12 +82,21 @@ void ThrowIfFailed(const ImageFilesStatus& status);
 struct ImageFilesApi
 {
     int version;
+    /// Reads every part of `in`, processes the parts holding channels named
+    /// R, G and B (every part with `everyPart`; a file of one part always),
+    /// and writes all the parts to `out`, each with its own pixel types,
+    /// channels and metadata: a part not processed is carried unchanged. A
+    /// deep or MIP-mapped part, a multi-part file with no R, G, B part, and
+    /// a multi-part file written to a format of one image are refused naming
+    /// the part, nothing written.
     ImageFilesStatus (*transform)(const std::string& in, const std::string& out,
-                                  const PixelProcess& process, const std::string& note);
+                                  const PixelProcess& process, const std::string& note,
+                                  bool everyPart);
     ImageFilesStatus (*write)(const std::string& path, const float* pixels, int width, int height,
                               int channels, const std::vector<std::string>& channelNames,
                               const ImageDescription& description, PixelType type);
-    /// Reads an image (with `pixels` false, only its header; the size is
+    /// Reads an image's first part, and counts its parts (with `pixels`
+    /// false, only its header; the size is
     /// checked against memory before anything is allocated).
     ImageFilesStatus (*read)(const std::string& path, ImageData& image, bool pixels);
     /// Removes the module's temporary files in flight (async-signal-safe):
@@ -87,7 +104,7 @@ struct ImageFilesApi
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 6;
+constexpr int kImageFilesApiVersion = 7;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

@@ -40,10 +40,38 @@ void FindRgb(const OIIO::ImageSpec& spec, int rgb[3])
     }
 }
 
+/// Whether the image has channels named R, G and B.
+bool HasRgbNames(const OIIO::ImageSpec& spec)
+{
+    int found = 0;
+    for (const char* name : {"R", "G", "B"})
+    {
+        found += std::find(spec.channelnames.begin(), spec.channelnames.end(), name) !=
+                         spec.channelnames.end()
+                     ? 1
+                     : 0;
+    }
+    return found == 3;
+}
+
+/// A part of a multi-part file as messages name it: "part 2 ('right')".
+std::string PartName(const OIIO::ImageSpec& spec, int part)
+{
+    std::string name = spec.get_string_attribute("oiio:subimagename");
+    if (name.empty())
+    {
+        name = spec.get_string_attribute("name");
+    }
+    return "part " + std::to_string(part) + (name.empty() ? "" : " ('" + name + "')");
+}
+
 /// Writes `path` atomically, or straight to `writeAs` when the caller's
-/// OutputSet owns the temporary name.
-void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pixels,
-           const std::string& writeAs = "")
+/// OutputSet owns the temporary name: one image per spec (the parts of a
+/// multi-part EXR), each from its own float pixels. Throws Exception naming
+/// the file when the format holds fewer images than given.
+void WriteParts(const std::string& path, const std::vector<OIIO::ImageSpec>& specs,
+                const std::vector<const float*>& pixels, const std::string& writeAs = "",
+                const std::string& in = "")
 {
     std::unique_ptr<AtomicFile> file;
     if (writeAs.empty())
@@ -58,17 +86,57 @@ void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pi
         throw Exception(PathInMessage(path) +
                         ": no image writer for this file type: " + OIIO::geterror());
     }
+    if (specs.size() > 1 && !output->supports("multiimage"))
+    {
+        std::string names;
+        for (size_t p = 1; p < specs.size(); ++p)
+        {
+            names += (names.empty() ? "" : ", ") + PartName(specs[p], int(p));
+        }
+        throw Exception(PathInMessage(path) + ": this format holds one image, and " +
+                        PathInMessage(in) + " has " + std::to_string(specs.size()) +
+                        " parts: " + names + " would be lost (write a multi-part EXR)");
+    }
     // The file itself was created above (or by the caller's OutputSet): what
     // fails here is the format refusing the image, not the file system.
-    if (!output->open(target, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
-        !output->close())
+    const auto failed = [&]
+    { throw Exception(PathInMessage(path) + ": cannot write image: " + output->geterror()); };
+    if (specs.size() == 1)
     {
-        throw Exception(PathInMessage(path) + ": cannot write image: " + output->geterror());
+        if (!output->open(target, specs[0]))
+        {
+            failed();
+        }
+    }
+    else if (!output->open(target, int(specs.size()), specs.data()))
+    {
+        failed();
+    }
+    for (size_t p = 0; p < specs.size(); ++p)
+    {
+        if (p > 0 && !output->open(target, specs[p], OIIO::ImageOutput::AppendSubimage))
+        {
+            failed();
+        }
+        if (!output->write_image(OIIO::TypeDesc::FLOAT, pixels[p]))
+        {
+            failed();
+        }
+    }
+    if (!output->close())
+    {
+        failed();
     }
     if (file)
     {
         file->commit();
     }
+}
+
+void Write(const std::string& path, const OIIO::ImageSpec& spec, const float* pixels,
+           const std::string& writeAs = "")
+{
+    WriteParts(path, {spec}, {pixels}, writeAs);
 }
 
 /// Checks, before anything is allocated, that an image of this size fits:
@@ -168,40 +236,99 @@ ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
                                                   : spec.metadata_val(p, false);
     }
     image.format = input.format_name();
+    image.x = spec.x;
+    image.y = spec.y;
     return image;
 }
 
 ImageFilesStatus Transform(const std::string& in, const std::string& out,
-                           const PixelProcess& process, const std::string& note)
+                           const PixelProcess& process, const std::string& note, bool everyPart)
 {
     return Reported(
         in,
         [&]
         {
             auto input = OpenImage(in);
-            const OIIO::ImageSpec spec = input->spec();
-            if (spec.nchannels < 3)
+            // Every part of a multi-part file (stereo views, AOVs in parts):
+            // the parts holding R, G, B are processed, every other part is
+            // carried as it is, pixels and header.
+            std::vector<OIIO::ImageSpec> specs;
+            for (int p = 0; input->seek_subimage(p, 0); ++p)
             {
-                throw Exception(in + ": has " + std::to_string(spec.nchannels) +
-                                " channels; a colour transform needs R, G and B");
+                specs.push_back(input->spec());
             }
-            CheckImageSize(in, spec);
-            std::vector<float> pixels(spec.image_pixels() * size_t(spec.nchannels));
-            if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+            if (specs.empty())
             {
                 throw Exception(in + ": cannot read pixels: " + input->geterror());
             }
-            input->close();
-            int rgb[3];
-            FindRgb(spec, rgb);
-            process(pixels.data(), spec.width, long(spec.height) * std::max(1, spec.depth),
-                    spec.nchannels, rgb, Header(*input, spec));
-            OIIO::ImageSpec outSpec = spec;  // pixel type, channel names, metadata
-            if (!note.empty())
+            const bool multi = specs.size() > 1;
+            bool any = false;
+            std::vector<std::vector<float>> pixels(specs.size());
+            for (size_t p = 0; p < specs.size(); ++p)
             {
-                outSpec.attribute("bandlight:transform", note);
+                const OIIO::ImageSpec& spec = specs[p];
+                const std::string where = multi ? in + ", " + PartName(spec, int(p)) : in;
+                if (spec.deep)
+                {
+                    throw Exception(where +
+                                    ": holds deep pixels, which bandlight does not carry: "
+                                    "nothing was written (flatten it first)");
+                }
+                if (multi && input->spec_dimensions(int(p), 1).width > 0)
+                {
+                    throw Exception(where +
+                                    ": has MIP levels, which bandlight does not carry: "
+                                    "nothing was written");
+                }
+                if (!multi && spec.nchannels < 3)
+                {
+                    throw Exception(in + ": has " + std::to_string(spec.nchannels) +
+                                    " channels; a colour transform needs R, G and B");
+                }
+                CheckImageSize(where, spec);
+                if (!input->seek_subimage(int(p), 0))
+                {
+                    throw Exception(where + ": cannot read pixels: " + input->geterror());
+                }
+                pixels[p].resize(spec.image_pixels() * size_t(spec.nchannels));
+                if (!input->read_image(int(p), 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                                       pixels[p].data()))
+                {
+                    throw Exception(where + ": cannot read pixels: " + input->geterror());
+                }
             }
-            Write(out, outSpec, pixels.data());
+            input->close();
+            std::vector<OIIO::ImageSpec> outSpecs = specs;  // pixel types, names, metadata
+            std::vector<const float*> data;
+            for (size_t p = 0; p < specs.size(); ++p)
+            {
+                const OIIO::ImageSpec& spec = specs[p];
+                data.push_back(pixels[p].data());
+                if (multi && !everyPart && !HasRgbNames(spec))
+                {
+                    continue;  // carried
+                }
+                int rgb[3];
+                FindRgb(spec, rgb);
+                ImageData header = Header(*input, spec);
+                header.part = int(p);
+                header.parts = int(specs.size());
+                header.partName = multi ? PartName(spec, int(p)) : "";
+                process(pixels[p].data(), spec.width, long(spec.height) * std::max(1, spec.depth),
+                        spec.nchannels, rgb, header);
+                any = true;
+                if (!note.empty())
+                {
+                    outSpecs[p].attribute("bandlight:transform", note);
+                }
+            }
+            if (!any)
+            {
+                throw Exception(in + ": none of its " + std::to_string(specs.size()) +
+                                " parts has channels named R, G and B: nothing to relight, "
+                                "nothing was written");
+            }
+            WriteParts(out, outSpecs, data, "", in);
         });
 }
 
@@ -257,6 +384,12 @@ ImageFilesStatus Read(const std::string& path, ImageData& image, bool pixels)
             CheckImageSize(path, spec);
             image = Header(*input, spec);
             image.pixels.clear();
+            // How many parts the file has (this reads the first).
+            while (input->seek_subimage(image.parts, 0))
+            {
+                ++image.parts;
+            }
+            input->seek_subimage(0, 0);
             if (pixels)
             {
                 image.pixels.resize(spec.image_pixels() * size_t(spec.nchannels));

@@ -8,6 +8,7 @@
 
 #include "bandlight/jobs/ImageApply.h"
 #include "bandlight/jobs/Inputs.h"
+#include "bandlight/jobs/LightGroups.h"
 #include "bandlight/jobs/OutputPaths.h"
 #include "bandlight/jobs/SpectralJob.h"
 #include "bandlight/plugin/ConfigBuilder.h"
@@ -75,9 +76,8 @@ std::string Size(const RenderedImage& img)
     return std::to_string(img.width) + "x" + std::to_string(img.height);
 }
 
-/// Band values, tagged as what they are: not RGB.
-RenderFile WriteBandValues(const RenderedImage& img, const std::string& out, const BandSet& bands,
-                           OutputSet& outputs)
+/// How band values are described: not RGB.
+ImageDescription BandDescription(const BandSet& bands)
 {
     ImageDescription d;
     d.colorSpace = "bands";
@@ -93,9 +93,104 @@ RenderFile WriteBandValues(const RenderedImage& img, const std::string& out, con
     }
     d.attributes.push_back({"bandlight:bands", list});
     d.attributes.push_back({"colorInteropID", "data"});
-    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames, d,
-               PixelType::FLOAT, &outputs);
+    return d;
+}
+
+/// Band values, tagged as what they are: not RGB.
+RenderFile WriteBandValues(const RenderedImage& img, const std::string& out, const BandSet& bands,
+                           OutputSet& outputs)
+{
+    WriteImage(out, img.pixels.data(), img.width, img.height, img.channels, img.channelNames,
+               BandDescription(bands), PixelType::FLOAT, &outputs);
     return {out, Size(img) + ", " + std::to_string(img.channels) + " band channels"};
+}
+
+/// A render by light groups: each group's image (and its spectral
+/// radiance), and the beauty, their sum.
+struct GroupRender
+{
+    std::vector<std::string> names;
+    std::vector<RenderedImage> images;
+    std::vector<RenderedImage> spectra;  ///< empty without spectra
+};
+
+/// `parts` summed in double, each value rounded once: the beauty of a
+/// light-group render is Σ groups to float precision.
+RenderedImage SumImages(const std::vector<RenderedImage>& parts)
+{
+    RenderedImage sum = parts.front();
+    for (size_t i = 0; i < sum.pixels.size(); ++i)
+    {
+        double v = 0.0;
+        for (const RenderedImage& p : parts)
+        {
+            v += p.pixels[i];
+        }
+        sum.pixels[i] = float(v);
+    }
+    return sum;
+}
+
+/// The render with one layer per light group: the beauty's channels, its
+/// spectral radiance (when given), then for each group "<group>.<channel>"
+/// for both; the groups listed in bandlight:lightGroups.
+RenderFile WriteLightGroups(const RenderedImage& beauty, const RenderedImage* beautySpectra,
+                            const GroupRender& groups, const std::string& out, ImageDescription d,
+                            OutputSet& outputs)
+{
+    std::vector<const RenderedImage*> layers = {&beauty};
+    std::vector<std::string> prefixes = {""};
+    if (beautySpectra)
+    {
+        layers.push_back(beautySpectra);
+        prefixes.push_back("");
+    }
+    for (size_t g = 0; g < groups.names.size(); ++g)
+    {
+        layers.push_back(&groups.images[g]);
+        prefixes.push_back(groups.names[g] + ".");
+        if (beautySpectra)
+        {
+            layers.push_back(&groups.spectra[g]);
+            prefixes.push_back(groups.names[g] + ".");
+        }
+    }
+    std::vector<std::string> names;
+    int channels = 0;
+    for (size_t l = 0; l < layers.size(); ++l)
+    {
+        for (const std::string& n : layers[l]->channelNames)
+        {
+            names.push_back(prefixes[l] + n);
+        }
+        channels += layers[l]->channels;
+    }
+    const size_t count = size_t(beauty.width) * size_t(beauty.height);
+    std::vector<float> pixels(count * size_t(channels));
+    for (size_t p = 0; p < count; ++p)
+    {
+        float* dst = &pixels[p * size_t(channels)];
+        for (const RenderedImage* l : layers)
+        {
+            dst = std::copy_n(&l->pixels[p * size_t(l->channels)], l->channels, dst);
+        }
+    }
+    std::string list;
+    for (const std::string& n : groups.names)
+    {
+        list += (list.empty() ? "" : ",") + n;
+    }
+    d.attributes.push_back({LIGHT_GROUPS_ATTRIBUTE, list});
+    if (beautySpectra)
+    {
+        d.attributes.push_back({"spectralLayoutVersion", "1.0"});
+        d.attributes.push_back({"emissiveUnits", "W.m^-2.sr^-1"});
+    }
+    WriteImage(out, pixels.data(), beauty.width, beauty.height, channels, names, d,
+               PixelType::FLOAT, &outputs);
+    return {out, Size(beauty) + ", " + std::to_string(groups.names.size()) + " light groups (" +
+                     list + ") beside the beauty, " + std::to_string(channels) + " channels" +
+                     (beautySpectra ? ", spectral radiance per group (Fichet 2021 layout)" : "")};
 }
 
 /// Linear RGB, with the spectral radiance beside it when `spectra`.
@@ -268,6 +363,12 @@ void CheckRenderOutputs(const PreparedRender& prepared)
     }
     if (r.out.empty())
     {
+        if (r.lightGroups)
+        {
+            throw ParameterError(
+                "{light_groups} writes one layer per light group into the render's EXR: give "
+                "{out}");
+        }
         if (r.spectra)
         {
             throw ParameterError("{spectra} writes the spectrum into the render's EXR: give {out}");
@@ -315,8 +416,34 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
         CheckFiles(r, scene);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    result.image = r.unplanned ? RenderSceneUnplanned(scene, r.threads, &result.counters)
-                               : RenderScene(scene, prepared.plan, r.threads, &result.counters);
+    const auto render = [&](const Scene& s, const ScenePlan* plan, RenderCounters* counters)
+    {
+        return r.unplanned ? RenderSceneUnplanned(s, r.threads, counters)
+                           : RenderScene(s, plan ? *plan : PlanScene(s), r.threads, counters);
+    };
+    GroupRender groups;
+    if (r.lightGroups)
+    {
+        // One render per group, each planned on its own (lights sharing a
+        // spectrum share a term only inside a group); the beauty is their sum.
+        groups.names = LightGroupNames(scene);
+        for (const std::string& g : groups.names)
+        {
+            RenderCounters c;
+            groups.images.push_back(render(SceneOfLightGroup(scene, g), nullptr, &c));
+            result.counters.pixels = c.pixels;
+            result.counters.hits = c.hits;
+            result.counters.lightTerms += c.lightTerms;
+            result.counters.specularTerms += c.specularTerms;
+            result.counters.attenuationTerms += c.attenuationTerms;
+            result.counters.spectralSamples += c.spectralSamples;
+        }
+        result.image = SumImages(groups.images);
+    }
+    else
+    {
+        result.image = render(scene, &prepared.plan, &result.counters);
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (r.out.empty())
     {
@@ -327,19 +454,48 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
     OutputSet outputs;
     if (BandOutput(scene))
     {
-        result.files.push_back(WriteBandValues(img, r.out, scene.settings.bands, outputs));
+        result.files.push_back(
+            r.lightGroups ? WriteLightGroups(img, nullptr, groups, r.out,
+                                             BandDescription(scene.settings.bands), outputs)
+                          : WriteBandValues(img, r.out, scene.settings.bands, outputs));
     }
     else
     {
+        const RgbSpace& space = FindRgbSpace(scene.settings.output);
         std::optional<RenderedImage> spectra;
         if (r.spectra)
         {
-            Scene radiance = scene;
-            radiance.settings.output = detail::SPECTRUM_OUTPUT;
-            spectra = RenderScene(radiance, PlanScene(radiance), r.threads);
+            const auto radiance = [](Scene s)
+            {
+                s.settings.output = detail::SPECTRUM_OUTPUT;
+                return s;
+            };
+            if (r.lightGroups)
+            {
+                for (const std::string& g : groups.names)
+                {
+                    const Scene s = radiance(SceneOfLightGroup(scene, g));
+                    groups.spectra.push_back(RenderScene(s, PlanScene(s), r.threads));
+                }
+                spectra = SumImages(groups.spectra);
+            }
+            else
+            {
+                const Scene s = radiance(scene);
+                spectra = RenderScene(s, PlanScene(s), r.threads);
+            }
         }
-        const RgbSpace& space = FindRgbSpace(scene.settings.output);
-        result.files.push_back(WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
+        if (r.lightGroups)
+        {
+            result.files.push_back(
+                WriteLightGroups(img, spectra ? &*spectra : nullptr, groups, r.out,
+                                 LinearImageDescription(space, ColorSpaceName(space)), outputs));
+        }
+        else
+        {
+            result.files.push_back(
+                WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
+        }
         if (r.preview)
         {
             const std::string png = r.previewPath.empty() ? PreviewPath(r.out) : r.previewPath;

@@ -44,6 +44,11 @@ struct RenderRequest
     /// Spectral mode: the spectral radiance goes into the EXR too, as
     /// S0.<nm> channels beside R, G, B (Fichet 2021 layout).
     bool spectra = false;
+    /// One layer per light group of the scene (a light's `group:`, else its
+    /// name) beside the beauty: "<group>.R/G/B" (and "<group>.S0.<λ>nm" with
+    /// `spectra`), the groups listed in bandlight:lightGroups; the beauty is
+    /// their sum, each group rendered and planned on its own.
+    bool lightGroups = false;
     /// Also render the spectral reference and write the ΔE00 map of the
     /// render against it beside `out` (stem + _dE00.exr and _dE00.png).
     bool compare = false;

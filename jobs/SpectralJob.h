@@ -17,6 +17,16 @@
 namespace bandlight::jobs
 {
 
+/// One spectral light group's change of light (`spectral --light-group
+/// NAME=FROM:TO`): exact, S2/S1 per wavelength at the group's own light's
+/// luminance.
+struct SpectralLightGroup
+{
+    std::string group;
+    Light from;
+    Light to;
+};
+
 /// How spectral pixels become working-space RGB: the lights, the working
 /// space, the plate convention and the observer (docs/spectral.md).
 struct SpectralOptions
@@ -40,6 +50,13 @@ struct SpectralOptions
     std::string kind = defaults::SPECTRAL_KIND;
     /// "auto" (as the layout says), "points" or "buckets".
     std::string sampling = defaults::SPECTRAL_SAMPLING;
+    /// Light groups of a render with spectra per group ("<group>.S0.<λ>nm",
+    /// as `render --spectra --light-groups` writes them): each named group
+    /// relit exactly from its light to its new one (`from`/`to` unused), the
+    /// others and the residual (beauty − Σ groups) integrated as they are;
+    /// the output holds the beauty, Σ of them, and each group's RGB as
+    /// "<group>.R/G/B". Needs plates "lit": a mix of lights has no one white.
+    std::vector<SpectralLightGroup> lightGroups;
 
     /// The layout options these make (the file of wavelengths read).
     SpectralLayoutOptions layoutOptions() const;

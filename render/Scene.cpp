@@ -138,4 +138,82 @@ SceneMaterial LectureMaterial(const std::string& name)
                     "' (copper, gold, silver, aluminium, tin, matte lacquer, gloss lacquer)");
 }
 
+namespace
+{
+/// A light's group; a scene built in code may leave names empty: its
+/// reader's rule then, light<N> in order.
+std::string GroupOf(const Scene& scene, size_t i)
+{
+    const SceneLight& l = scene.lights[i];
+    return !l.group.empty() ? l.group : !l.name.empty() ? l.name : "light" + std::to_string(i + 1);
+}
+}  // namespace
+
+std::vector<std::string> LightGroupNames(const Scene& scene)
+{
+    std::vector<std::string> names;
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+    {
+        const std::string g = GroupOf(scene, i);
+        if (std::find(names.begin(), names.end(), g) == names.end())
+        {
+            names.push_back(g);
+        }
+    }
+    return names;
+}
+
+Scene SceneOfLightGroup(const Scene& scene, const std::string& group)
+{
+    Scene s = scene;
+    s.lights.clear();
+    bool direct = false;
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+    {
+        const SceneLight& l = scene.lights[i];
+        if (GroupOf(scene, i) == group)
+        {
+            s.lights.push_back(l);
+            direct = direct || l.kind != SceneLight::Kind::AMBIENT;
+        }
+    }
+    if (s.lights.empty())
+    {
+        throw Exception("the scene has no light group '" + group + "'");
+    }
+    if (!direct)
+    {
+        for (SceneMaterial& m : s.materials)
+        {
+            m.ambientStar = SceneSpectrum();
+        }
+    }
+    return s;
+}
+
+void CheckLightGroupName(const std::string& name)
+{
+    const bool chars =
+        !name.empty() && std::all_of(name.begin(), name.end(),
+                                     [](char c) {
+                                         return std::isalnum(static_cast<unsigned char>(c)) ||
+                                                c == '_' || c == '-';
+                                     });
+    if (!chars)
+    {
+        throw Exception(
+            "a light's name or group must be letters, digits, '_' and '-' (it names "
+            "the layer <group>.R, <group>.G, <group>.B), got '" +
+            OneLine(name, 80) + "'");
+    }
+    for (const char* reserved : {"R", "G", "B", "A", "S0", "S1", "S2", "S3", "T"})
+    {
+        if (name == reserved)
+        {
+            throw Exception("a light group cannot be called '" + name +
+                            "': it is a channel name of the render itself");
+        }
+    }
+}
+
 }  // namespace bandlight

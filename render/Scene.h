@@ -50,6 +50,11 @@ struct SceneLight
         DIRECTIONAL,
     };
     Kind kind = Kind::POINT;
+    /// The light's name (the scene's `name:`, else "light1", "light2", …
+    /// in file order) and its light group (`group:`, else its name): lights
+    /// sharing a group share a layer of `render --light-groups`.
+    std::string name;
+    std::string group;
     SceneSpectrum spectrum;  ///< scaled so its largest band mean is 1 (the band model's I)
     double intensity = 1.0;
     Vec3 position = Vec3::Zero();     ///< POINT
@@ -139,6 +144,21 @@ struct RenderSettings
     static constexpr double kWidestRangeMinNm = 360.0;
     static constexpr double kWidestRangeMaxNm = 830.0;
 };
+
+struct Scene;
+
+/// The light groups of a scene, in the order their first light comes.
+std::vector<std::string> LightGroupNames(const Scene& scene);
+
+/// The scene lit by the lights of `group` alone (R_amb*, the single direct
+/// light's ambient term, goes with that light's group): what its layer of
+/// `render --light-groups` holds.
+Scene SceneOfLightGroup(const Scene& scene, const std::string& group);
+
+/// Throws Exception when `name` cannot name a light group's layer: it must
+/// be letters, digits, '_' and '-', and not a channel name of its own (R, G,
+/// B, A, the spectral S0–S3 and T).
+void CheckLightGroupName(const std::string& name);
 
 /// Sets the mode from its name: "band3" (the band model's VB/VG/VR), "bandN"
 /// (N equal bands over 400–700 nm, 3 ≤ N ≤ 300) or "spectral" (the bands

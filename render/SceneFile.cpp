@@ -504,10 +504,28 @@ void ReadCamera(const Reader& r, const YAML::Node& c, Camera& camera)
     }
 }
 
-SceneLight Light(const Reader& r, const YAML::Node& l, const BandSet& bands)
+SceneLight Light(const Reader& r, const YAML::Node& l, const BandSet& bands, size_t index)
 {
-    r.keys(l, "a light", {"type", "spectrum", "intensity", "position", "direction", "attenuation"});
+    r.keys(
+        l, "a light",
+        {"type", "name", "group", "spectrum", "intensity", "position", "direction", "attenuation"});
     SceneLight light;
+    light.name = l["name"] ? r.text(l["name"]) : "light" + std::to_string(index + 1);
+    light.group = l["group"] ? r.text(l["group"]) : light.name;
+    for (const char* key : {"name", "group"})
+    {
+        if (l[key])
+        {
+            try
+            {
+                CheckLightGroupName(r.text(l[key]));
+            }
+            catch (const Exception& e)
+            {
+                r.fail(l[key], e.what());
+            }
+        }
+    }
     const std::string type = l["type"] ? r.text(l["type"]) : "point";
     // What each kind uses besides spectrum and intensity; anything else
     // given would be ignored, so it is an error.
@@ -619,7 +637,16 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
         }
         for (const auto& l : ls)
         {
-            s.lights.push_back(Light(r, l, bands));
+            s.lights.push_back(Light(r, l, bands, s.lights.size()));
+            for (size_t i = 0; i + 1 < s.lights.size(); ++i)
+            {
+                if (s.lights[i].name == s.lights.back().name)
+                {
+                    r.fail(l, "two lights are named '" + s.lights.back().name +
+                                  "': a light's name is its own (lights share a layer through "
+                                  "group:)");
+                }
+            }
             direct += s.lights.back().kind != SceneLight::Kind::AMBIENT;
         }
     }

@@ -232,6 +232,13 @@ def relight(image: npt.ArrayLike, src: LightLike, dst: LightLike, method: str = 
             out: Optional[Float32Array] = None,
             plates: str = "balanced", adaptation: str = "cat02",
             camera: Optional[StrPath] = None, camera_idt: str = "D55") -> Float32Array: ...
+def relight_light_groups(groups: Mapping[str, npt.ArrayLike],
+                         changes: Mapping[str, Tuple[LightLike, LightLike]], *,
+                         beauty: Optional[npt.ArrayLike] = None, method: str = "bradford",
+                         working_space: str = "acescg", observer: ObserverLike = "1931",
+                         training: Optional[RemittancesLike] = None, plates: str = "lit",
+                         adaptation: str = "cat02", camera: Optional[StrPath] = None,
+                         camera_idt: str = "D55", threads: int = 0) -> Dict[str, Any]: ...
 
 # --- jobs ------------------------------------------------------------------------
 
@@ -322,20 +329,22 @@ def _apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           dst: Optional[LightLike] = None, method: str = "bradford",
           working_space: str = "acescg", observer: ObserverLike = "1931",
           training: Optional[RemittancesLike] = None,
-          plates: str = "balanced", adaptation: str = "cat02",
+          plates: Optional[str] = None, adaptation: str = "cat02",
           camera: Optional[StrPath] = None, camera_idt: str = "D55",
           threads: int = 0, skip_existing: bool = False,
-          keep_going: bool = False) -> ApplyResult: ...
+          keep_going: bool = False,
+          light_groups: Optional[Mapping[str, Tuple[LightLike, LightLike]]] = None,
+          light_group_layers: Optional[Mapping[str, str]] = None) -> ApplyResult: ...
 @overload
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
            mode: Optional[str] = None, threads: int = 0, unplanned: bool = False,
            out: None = None, spectra: bool = False, compare: bool = False,
-           preview: Union[bool, StrPath] = True) -> Float32Array: ...
+           preview: Union[bool, StrPath] = True, light_groups: bool = False) -> Float32Array: ...
 @overload
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
            mode: Optional[str] = None, threads: int = 0, unplanned: bool = False,
            out: StrPath, spectra: bool = False, compare: bool = False,
-           preview: Union[bool, StrPath] = True) -> Dict[str, Any]: ...
+           preview: Union[bool, StrPath] = True, light_groups: bool = False) -> Dict[str, Any]: ...
 def explain_scene(scene: Optional[StrPath] = None, *, text: Optional[str] = None,
                   source: str = "<scene>", mode: Optional[str] = None,
                   unplanned: bool = False) -> str: ...
@@ -351,8 +360,9 @@ def spectral_to_rgb(spectra: npt.ArrayLike, wavelengths: npt.ArrayLike, *,
                     threads: int = 0) -> Float32Array: ...
 def spectral(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
              src: Optional[LightLike] = None, dst: Optional[LightLike] = None,
-             working_space: str = "acescg", plates: str = "balanced",
+             working_space: str = "acescg", plates: Optional[str] = None,
              adaptation: str = "cat02", observer: ObserverLike = "1931",
              channels: Union[Mapping[str, float], StrPath, None] = None,
              kind: str = "emissive", sampling: str = "auto", threads: int = 0,
-             skip_existing: bool = False, keep_going: bool = False) -> Dict[str, Any]: ...
+             skip_existing: bool = False, keep_going: bool = False,
+             light_groups: Optional[Mapping[str, Tuple[LightLike, LightLike]]] = None) -> Dict[str, Any]: ...

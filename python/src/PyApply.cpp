@@ -3,8 +3,8 @@
 // as `bandlight apply` applies them (jobs/ApplyJob).
 #include "PyBandlight.h"
 #include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/Frames.h"
 
 namespace bandlight::python
 {
@@ -16,9 +16,14 @@ py::dict Apply(const py::object& input, const py::object& output,
                const py::object& config, const std::optional<std::string>& colorspace,
                const py::object& src, const py::object& dst, const std::string& method,
                const std::string& working, const py::object& observer, const py::object& training,
-               const std::string& plates, const std::string& adaptation, const py::object& camera,
-               const std::string& cameraIdt, int threads, bool skipExisting, bool keepGoing)
+               const std::optional<std::string>& platesArg, const std::string& adaptation,
+               const py::object& camera, const std::string& cameraIdt, int threads,
+               bool skipExisting, bool keepGoing, const py::object& lightGroups,
+               const py::object& lightGroupLayers)
 {
+    // A render's light group carries its own light's cast: lit unless said.
+    const std::string plates =
+        platesArg.value_or(lightGroups.is_none() ? defaults::PLATES : defaults::LIGHT_GROUP_PLATES);
     jobs::ApplyRequest r;
     r.input = PathText(input, "input");
     r.output = PathText(output, "output");
@@ -50,7 +55,8 @@ py::dict Apply(const py::object& input, const py::object& output,
         add(method != defaults::METHOD, "method");
         add(working != defaults::WORKING_SPACE, "working_space");
         add(!training.is_none(), "training");
-        add(plates != defaults::PLATES, "plates");
+        add(platesArg.has_value(), "plates");
+        add(!lightGroups.is_none(), "light_groups");
         add(adaptation != defaults::ADAPTATION, "adaptation");
         add(!camera.is_none(), "camera");
         add(cameraIdt != defaults::IDT_LIGHT, "camera_idt");
@@ -60,7 +66,49 @@ py::dict Apply(const py::object& input, const py::object& output,
                                  " do not apply to it (give the look, or the change of light)");
         }
     }
-    if (r.look.empty() && !src.is_none())
+    if (!lightGroupLayers.is_none())
+    {
+        for (const auto& [name, layer] :
+             CastTo<py::dict>(lightGroupLayers, "light_group_layers", "a dict {group: layer}"))
+        {
+            r.lightGroupLayers[CastTo<std::string>(name, "a group's name", "str")] =
+                CastTo<std::string>(layer, "a group's layer", "str");
+        }
+    }
+    if (r.look.empty() && !lightGroups.is_none())
+    {
+        if (!src.is_none())
+        {
+            throw ParameterError(
+                "{src} and {dst} do not apply with {light_groups}: each group "
+                "takes its own, {name: (src, dst)}");
+        }
+        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
+        for (const auto& [key, value] :
+             CastTo<py::dict>(lightGroups, "light_groups", "a dict {group: (src, dst)}"))
+        {
+            const py::tuple lights =
+                CastTo<py::tuple>(value, "a light group's change", "a tuple (src, dst)");
+            if (lights.size() != 2)
+            {
+                throw ParameterError("{light_groups} takes {group: (src, dst)}");
+            }
+            jobs::LightGroupRelight g;
+            g.group = CastTo<std::string>(key, "a group's name", "str");
+            g.relight.plates = platesArgs.options();
+            g.relight.src = ToLight(lights[0]);
+            g.relight.dst = ToLight(lights[1]);
+            g.relight.method = method;
+            g.relight.workingSpace = working;
+            g.relight.observer = py::str(observer).cast<std::string>();
+            if (!training.is_none())
+            {
+                g.relight.training = ToReflectances(training);
+            }
+            r.lightGroups.push_back(g);
+        }
+    }
+    else if (r.look.empty() && !src.is_none())
     {
         const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
         jobs::RelightRequest relight;
@@ -106,9 +154,11 @@ The frames a frame set names, as ``--frames`` reads it: "1001-1100",
           py::arg("src") = py::none(), py::arg("dst") = py::none(),
           py::arg("method") = defaults::METHOD, py::arg("working_space") = defaults::WORKING_SPACE,
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
-          py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
+          py::arg("plates") = py::none(), py::arg("adaptation") = defaults::ADAPTATION,
           py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
-          py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false, py::arg("keep_going") = false,
+          py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false,
+          py::arg("keep_going") = false, py::arg("light_groups") = py::none(),
+          py::arg("light_group_layers") = py::none(),
           (std::string(R"doc(
 Applies a look, or an illuminant change, to an image file or a frame
 sequence through OpenImageIO: the job of ``bandlight apply``. Returns
@@ -134,6 +184,12 @@ threads threads (0: all cores). frames: a frame set as farms hand them out
 output exists are skipped (outputs are written whole or not at all).
 keep_going: a frame that fails does not stop the others; it is listed in
 "failed" (without it, the first failure raises).
+light_groups: {group: (src, dst)}, instead of src and dst: each light group
+of a multi-layer EXR (Blender/Cycles, Arnold or bandlight naming) relit on
+its own with method, the beauty written as the relit groups plus the
+residual, everything else kept (docs/lightgroups.md); plates then defaults
+to "lit". light_group_layers: {group: layer prefix or "r,g,b"} for a file
+that names its groups otherwise.
 )doc") + kPlatesDoc)
               .c_str());
 }

@@ -275,5 +275,6 @@ PYBIND11_MODULE(_bandlight, m)
     AddRender(m);
     AddApply(m);
     AddSpectralImage(m);
+    AddLightGroups(m);
     m.attr("__name__") = ownName;
 }

@@ -52,6 +52,7 @@ void AddAccuracy(py::module_& m);
 void AddRender(py::module_& m);
 void AddApply(py::module_& m);
 void AddSpectralImage(py::module_& m);
+void AddLightGroups(py::module_& m);
 
 // ---------------------------------------------------------------------------
 // Errors (PyBandlight.cpp). AddErrors registers how the library's exceptions

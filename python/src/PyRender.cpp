@@ -81,13 +81,14 @@ py::dict ResultDict(jobs::RenderResult&& result)
 py::object Render(const std::optional<Path>& scene, const std::optional<std::string>& text,
                   const std::string& source, const std::optional<std::string>& mode, int threads,
                   bool unplanned, const std::optional<Path>& out, bool spectra, bool compare,
-                  const py::object& preview)
+                  const py::object& preview, bool lightGroups)
 {
     jobs::RenderRequest r = SceneRequest(scene, text, source, mode, unplanned);
     r.threads = ToThreads(threads);
     r.out = out ? out->string() : "";
     r.spectra = spectra;
     r.compare = compare;
+    r.lightGroups = lightGroups;
     if (py::isinstance<py::bool_>(preview))
     {
         r.preview = preview.cast<bool>();
@@ -120,7 +121,8 @@ void AddRender(py::module_& m)
           py::arg("text") = py::none(), py::arg("source") = defaults::SCENE_SOURCE,
           py::arg("mode") = py::none(), py::arg("threads") = defaults::THREADS,
           py::arg("unplanned") = false, py::arg("out") = py::none(), py::arg("spectra") = false,
-          py::arg("compare") = false, py::arg("preview") = jobs::RenderRequest{}.preview, R"doc(
+          py::arg("compare") = false, py::arg("preview") = jobs::RenderRequest{}.preview,
+          py::arg("light_groups") = false, R"doc(
 Renders a YAML scene (docs/scenes.md) as ``bandlight render`` does.
 
 Without out: returns the image, float32 (height, width, channels), top row
@@ -132,7 +134,9 @@ bytes: the EXR, its sRGB preview (an RGB render; preview: True beside out
 as OUT.png, a path: there, False: none), with spectra=True the spectral
 radiance as S0.<nm> channels beside R, G, B (spectral mode), with
 compare=True the spectral reference's ΔE00 map OUT_dE00.exr and
-OUT_dE00.png; all replaced together or none. Returns a dict: "files" (every
+OUT_dE00.png, with light_groups=True one layer per light group beside the
+beauty (<group>.R/G/B, and <group>.S0.<nm> with spectra; docs/lightgroups.md);
+all replaced together or none. Returns a dict: "files" (every
 file written), "width", "height", "channels", "counters" (what the renderer
 evaluated: pixels, hits, light_terms, specular_terms, attenuation_terms,
 spectral_samples), "seconds" (the render itself), "explanation" (the plan),

@@ -2,8 +2,8 @@
 // Spectral images (jobs/SpectralJob): read, integrated and relit in memory,
 // and spectral EXRs converted to RGB EXRs as `bandlight spectral` does.
 #include "PyBandlight.h"
-#include "bandlight/jobs/SpectralJob.h"
 #include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/SpectralJob.h"
 
 namespace bandlight::python
 {
@@ -151,11 +151,15 @@ py::array_t<float> SpectralToRgb(
 
 py::dict Spectral(const py::object& input, const py::object& output,
                   const std::optional<std::string>& frames, const py::object& src,
-                  const py::object& dst, const std::string& working, const std::string& plates,
-                  const std::string& adaptation, const py::object& observer,
-                  const py::object& channels, const std::string& kind, const std::string& sampling,
-                  int threads, bool skipExisting, bool keepGoing)
+                  const py::object& dst, const std::string& working,
+                  const std::optional<std::string>& platesArg, const std::string& adaptation,
+                  const py::object& observer, const py::object& channels, const std::string& kind,
+                  const std::string& sampling, int threads, bool skipExisting, bool keepGoing,
+                  const py::object& lightGroups)
 {
+    // Light groups show several lights, no one white: lit unless said.
+    const std::string plates =
+        platesArg.value_or(lightGroups.is_none() ? defaults::PLATES : defaults::LIGHT_GROUP_PLATES);
     jobs::SpectralRequest r;
     r.files.input = PathText(input, "input");
     r.files.output = PathText(output, "output");
@@ -163,6 +167,21 @@ py::dict Spectral(const py::object& input, const py::object& output,
     r.files.skipExisting = skipExisting;
     r.files.keepGoing = keepGoing;
     r.options = Options(src, dst, working, plates, adaptation, observer, channels, kind, sampling);
+    if (!lightGroups.is_none())
+    {
+        for (const auto& [key, value] :
+             CastTo<py::dict>(lightGroups, "light_groups", "a dict {group: (src, dst)}"))
+        {
+            const py::tuple lights =
+                CastTo<py::tuple>(value, "a light group's change", "a tuple (src, dst)");
+            if (lights.size() != 2)
+            {
+                throw ParameterError("{light_groups} takes {group: (src, dst)}");
+            }
+            r.options.lightGroups.push_back({CastTo<std::string>(key, "a group's name", "str"),
+                                             ToLight(lights[0]), ToLight(lights[1])});
+        }
+    }
     r.threads = ToThreads(threads);
     jobs::SpectralResult result;
     {
@@ -205,8 +224,8 @@ Bad files raise ValueError naming the file and the channel.
           py::kw_only(), py::arg("kind") = defaults::SPECTRAL_KIND, py::arg("src") = py::none(),
           py::arg("dst") = py::none(), py::arg("working_space") = defaults::WORKING_SPACE,
           py::arg("plates") = defaults::PLATES, py::arg("adaptation") = defaults::ADAPTATION,
-          py::arg("observer") = defaults::OBSERVER, py::arg("sampling") = defaults::SPECTRAL_SAMPLING,
-          py::arg("threads") = defaults::THREADS,
+          py::arg("observer") = defaults::OBSERVER,
+          py::arg("sampling") = defaults::SPECTRAL_SAMPLING, py::arg("threads") = defaults::THREADS,
           (std::string(R"doc(
 Spectra (any shape ending in one axis of len(wavelengths) samples) to linear
 RGB in working_space, shape (..., 3), with the GIL released: one dot product
@@ -216,15 +235,21 @@ by default (sampling="buckets" for means over each sample's interval).
               .c_str());
     m.def("spectral", &Spectral, py::arg("input"), py::arg("output"), py::kw_only(),
           py::arg("frames") = py::none(), py::arg("src") = py::none(), py::arg("dst") = py::none(),
-          py::arg("working_space") = defaults::WORKING_SPACE, py::arg("plates") = defaults::PLATES,
+          py::arg("working_space") = defaults::WORKING_SPACE, py::arg("plates") = py::none(),
           py::arg("adaptation") = defaults::ADAPTATION, py::arg("observer") = defaults::OBSERVER,
           py::arg("channels") = py::none(), py::arg("kind") = defaults::SPECTRAL_KIND,
-          py::arg("sampling") = defaults::SPECTRAL_SAMPLING, py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false,
-          py::arg("keep_going") = false,
+          py::arg("sampling") = defaults::SPECTRAL_SAMPLING, py::arg("threads") = defaults::THREADS,
+          py::arg("skip_existing") = false, py::arg("keep_going") = false,
+          py::arg("light_groups") = py::none(),
           (std::string(R"doc(
 Converts a spectral EXR (or a frame sequence of them, with frames=) to an
 RGB EXR tagged with its colour space: the job of ``bandlight spectral``.
 Returns {"layout", "applied", "frames", "skipped", "failed", "seconds"}.
+plates: None is "balanced", or "lit" with light_groups. light_groups: {group:
+(src, dst)}: each spectral light group of a `render(spectra=True,
+light_groups=True)` EXR relit exactly from its light to its new one, the
+others and the residual integrated as they are; the output holds the beauty
+and each group's R, G, B (docs/lightgroups.md).
 )doc") + kConventionsDoc)
               .c_str());
 }

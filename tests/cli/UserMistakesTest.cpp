@@ -4,11 +4,13 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
@@ -352,4 +354,111 @@ TEST_CASE("Commands say what they did and name lights after their files", "[cli]
     REQUIRE(r.code == 0);
     CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), Contains("bradford_A_to_tungsten3200"));
     CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), !Contains("_to_value"));
+
+namespace
+{
+/// A light-group render in Arnold's naming: beauty R, G, B, A and groups
+/// key and fill, 4x3 pixels; `fill` scales the fill group (2: the groups
+/// sum past the beauty), `nan` puts a NaN into the key group.
+std::string ArnoldShot(const std::string& path, float fill = 1.0f, bool nan = false)
+{
+    const std::vector<std::string> names = {
+        "R",           "G",           "B",          "A",          "RGBA_fill.B",
+        "RGBA_fill.G", "RGBA_fill.R", "RGBA_key.B", "RGBA_key.G", "RGBA_key.R"};
+    OIIO::ImageSpec spec(4, 3, int(names.size()), OIIO::TypeDesc::FLOAT);
+    spec.channelnames = names;
+    std::vector<float> px(12 * names.size());
+    for (size_t p = 0; p < 12; ++p)
+    {
+        float* v = &px[p * names.size()];
+        for (int c = 0; c < 3; ++c)
+        {
+            v[6 - c] = fill * 0.2f;
+            v[9 - c] = 0.3f + 0.01f * float(p);
+            v[c] = 0.2f + 0.3f + 0.01f * float(p);
+        }
+        v[3] = 1.0f;
+    }
+    if (nan)
+    {
+        px[5 * names.size() + 8] = std::nanf("");
+    }
+    auto out = OIIO::ImageOutput::create(path);
+    REQUIRE(out);
+    REQUIRE(out->open(path, spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    REQUIRE(out->close());
+    return path;
+}
+}  // namespace
+
+TEST_CASE("apply --light-group: bad input is one line naming the group or file, nothing written",
+          "[cli][mistakes][lightgroups]")
+{
+    const std::string dir = Folder("lightgroups");
+    const std::string shot = ArnoldShot(dir + "/shot.exr");
+    const std::string out = dir + "/out.exr";
+    const std::string apply = "apply '" + shot + "' '" + out + "' ";
+    SECTION("a group the file does not hold")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group rim=A:D65"),
+                     "shot.exr: has no light group 'rim' (it has fill, key)");
+    }
+    SECTION("two groups resolving to the same layer")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group key=A:D65 --light-group rim=RGBA_key"),
+                     "light groups 'key' and 'rim' resolve to the same channel");
+    }
+    SECTION("groups that are no partition of the beauty")
+    {
+        const std::string over = ArnoldShot(dir + "/over.exr", 2.0f);
+        CheckOneLine(Bandlight("apply '" + over + "' '" + out + "' --light-group key=A:D65"),
+                     "over.exr: the light groups sum to more than the beauty at pixel (0, 0)");
+    }
+    SECTION("NaN in a group")
+    {
+        const std::string nan = ArnoldShot(dir + "/nan.exr", 1.0f, true);
+        CheckOneLine(Bandlight("apply '" + nan + "' '" + out + "' --light-group fill=F11:D65"),
+                     "nan.exr: light group 'key' is NaN at pixel (1, 1)");
+    }
+    SECTION("--light-group with --look, or with --from")
+    {
+        REQUIRE(Bandlight("config --out '" + dir + "/pkg' --illuminants A,D65 --methods bradford")
+                    .code == 0);
+        CheckOneLine(Bandlight(apply + "--look bradford_A_to_D65 --config '" + dir +
+                               "/pkg' --light-group key=A:D65"),
+                     "--look applies one look to the whole image: --light-group does not apply");
+        CheckOneLine(Bandlight(apply + "--from A --to D65 --light-group key=A:D65"),
+                     "--from does not apply with --light-group");
+    }
+    SECTION("a matte of another size than the plate")
+    {
+        const std::vector<std::string> names = {"A"};
+        OIIO::ImageSpec spec(5, 3, 1, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = names;
+        const std::vector<float> ones(15, 1.0f);
+        auto matte = OIIO::ImageOutput::create(dir + "/matte.exr");
+        REQUIRE(matte);
+        REQUIRE(matte->open(dir + "/matte.exr", spec));
+        REQUIRE(matte->write_image(OIIO::TypeDesc::FLOAT, ones.data()));
+        REQUIRE(matte->close());
+        CheckOneLine(Bandlight(apply + "--matte '" + dir +
+                               "/matte.exr' --look-inside A:D65 --look-outside F11:D65"),
+                     "matte.exr: the matte's data window is 5x3 at (0, 0)");
+        CheckOneLine(Bandlight(apply + "--matte '" + dir + "/matte.exr' --look-inside A:D65"),
+                     "give --matte MATTE.exr[:CHANNEL] with --look-inside FROM:TO and "
+                     "--look-outside FROM:TO");
+    }
+    SECTION("a malformed --light-group")
+    {
+        CheckOneLine(Bandlight(apply + "--light-group key"), "--light-group takes NAME=FROM:TO");
+        CheckOneLine(Bandlight(apply + "--light-group key=A:"), "give both lights");
+    }
+    CHECK_FALSE(fs::exists(out));
+    // The good run: relit, the beauty the sum.
+    const Result ok = Bandlight(apply + "--light-group key=A:D65 --method rootpoly");
+    INFO(ok.err);
+    CHECK(ok.code == 0);
+    CHECK_THAT(ok.err, Contains("2 light groups (fill, key), Arnold naming, beauty R, G, B"));
+    CHECK(fs::is_regular_file(out));
 }

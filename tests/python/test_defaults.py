@@ -22,7 +22,7 @@ KEYWORD_ENTRIES = {
     "space": {"WORKING_SPACE"},
     "method": {"METHOD", "WHITE_ADAPTATION"},
     "observer": {"OBSERVER"},
-    "plates": {"PLATES", "ACCURACY_PLATES"},
+    "plates": {"PLATES", "ACCURACY_PLATES", "LIGHT_GROUP_PLATES"},
     "adaptation": {"ADAPTATION"},
     "camera_idt": {"IDT_LIGHT"},
     "lut_size": {"TRANSFORM_LUT_SIZE", "CONFIG_LUT_SIZE"},

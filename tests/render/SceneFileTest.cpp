@@ -259,3 +259,46 @@ render: {mode: spectral, range: [360, 830], step: 5}
     CHECK(s.settings.rangeMinNm == 360.0);
     CHECK(s.settings.rangeMaxNm == 830.0);
 }
+
+TEST_CASE("Lights have names and light groups: unnamed ones light1, light2, ... in file order",
+          "[render][file][lightgroups]")
+{
+    const Scene s = ReadSceneText(R"(
+lights:
+  - {type: point, position: [0, 2, 2], spectrum: A}
+  - {name: window, group: daylight, type: directional, direction: [0, 0, -1], spectrum: D65}
+  - {name: bounce, group: daylight, type: ambient, spectrum: D65, intensity: 0.1}
+  - {type: ambient, spectrum: F11, intensity: 0.05}
+)",
+                                  "s.yaml");
+    REQUIRE(s.lights.size() == 4);
+    CHECK(s.lights[0].name == "light1");
+    CHECK(s.lights[0].group == "light1");
+    CHECK(s.lights[1].name == "window");
+    CHECK(s.lights[1].group == "daylight");
+    CHECK(s.lights[3].name == "light4");
+    CHECK(LightGroupNames(s) == std::vector<std::string>{"light1", "daylight", "light4"});
+    const Scene daylight = SceneOfLightGroup(s, "daylight");
+    REQUIRE(daylight.lights.size() == 2);
+    CHECK(daylight.lights[1].name == "bounce");
+    CHECK_THROWS_WITH(SceneOfLightGroup(s, "sun"), "the scene has no light group 'sun'");
+}
+
+TEST_CASE("Light names that cannot name a layer, and a name twice, are errors",
+          "[render][file][lightgroups]")
+{
+    const std::string m = "materials:\n  m: {diffuse: 0.5}\n";
+    CHECK(Message("lights:\n  - {name: 'key light', spectrum: A}\n" + m) ==
+          "s.yaml:2: a light's name or group must be letters, digits, '_' and '-' (it names "
+          "the layer <group>.R, <group>.G, <group>.B), got 'key light'");
+    CHECK(Message("lights:\n  - {group: S0, spectrum: A}\n" + m) ==
+          "s.yaml:2: a light group cannot be called 'S0': it is a channel name of the render "
+          "itself");
+    CHECK(Message("lights:\n  - {name: key, spectrum: A}\n  - {name: key, spectrum: D65}\n" +
+                  m) ==
+          "s.yaml:3: two lights are named 'key': a light's name is its own (lights share a "
+          "layer through group:)");
+    CHECK(Message("lights:\n  - {spectrum: A}\n  - {name: light1, spectrum: D65}\n" + m) ==
+          "s.yaml:3: two lights are named 'light1': a light's name is its own (lights share a "
+          "layer through group:)");
+}

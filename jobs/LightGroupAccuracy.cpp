@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "bandlight/jobs/LightGroupAccuracy.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "bandlight/jobs/ApplyJob.h"
+#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LightGroups.h"
+#include "bandlight/spectral/Colorimetry.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/RgbSpaces.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+
+/// R, G, B of layer `prefix` of an image read whole.
+std::vector<Vec3> Layer(const ImageData& image, const std::string& prefix)
+{
+    int rgb[3] = {-1, -1, -1};
+    for (int c = 0; c < 3; ++c)
+    {
+        const std::string name = prefix + "RGB"[c];
+        const auto at = std::find(image.channelNames.begin(), image.channelNames.end(), name);
+        if (at == image.channelNames.end())
+        {
+            throw Exception("the image has no channel '" + name + "'");
+        }
+        rgb[c] = int(at - image.channelNames.begin());
+    }
+    const size_t count = size_t(image.width) * size_t(image.height);
+    std::vector<Vec3> v(count);
+    for (size_t p = 0; p < count; ++p)
+    {
+        const float* px = &image.pixels[p * size_t(image.channels)];
+        v[p] = Vec3(px[rgb[0]], px[rgb[1]], px[rgb[2]]);
+    }
+    return v;
+}
+
+ImageData ReadWhole(const std::string& path)
+{
+    ImageData d;
+    ThrowIfFailed(ImageFiles().read(path, d, true));
+    return d;
+}
+
+/// Mean and 95th percentile.
+std::pair<double, double> Summary(std::vector<double> v)
+{
+    if (v.empty())
+    {
+        return {0.0, 0.0};
+    }
+    double sum = 0.0;
+    for (const double x : v)
+    {
+        sum += x;
+    }
+    std::sort(v.begin(), v.end());
+    return {sum / double(v.size()), v[std::min(v.size() - 1, size_t(0.95 * double(v.size())))]};
+}
+
+/// A temporary folder for the run's files, removed with it.
+struct Scratch
+{
+    std::string dir;
+    Scratch()
+    {
+        dir = (std::filesystem::temp_directory_path() /
+               (".bandlight-lightgroups-" + std::to_string(::getpid()) + "-" +
+                std::to_string(std::chrono::steady_clock::now().time_since_epoch().count())))
+                  .string();
+        std::filesystem::create_directories(dir);
+    }
+    ~Scratch()
+    {
+        std::error_code ec;
+        std::filesystem::remove_all(dir, ec);
+    }
+};
+
+double Seconds(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, Reporter& reporter)
+{
+    if (r.changes.empty())
+    {
+        throw ParameterError(
+            "{light_group}: give each group of the image its change, "
+            "NAME=FROM:TO");
+    }
+    const RgbSpace& working = FindRgbSpace(r.workingSpace);
+    const std::vector<std::string> methods =
+        r.methods.empty() ? std::vector<std::string>{"bradford", "cat02", "fit3x3", "rootpoly"}
+                          : r.methods;
+    CheckImageInput(r.image);
+    const ImageData input = ReadWhole(r.image);
+    const LightGroupLayout layout = FindLightGroups(r.image, input.channelNames, input.attributes);
+    for (const LightGroupLayer& g : layout.groups)
+    {
+        if (std::none_of(r.changes.begin(), r.changes.end(),
+                         [&](const SpectralLightGroup& c) { return c.group == g.name; }))
+        {
+            throw Exception(r.image + ": light group '" + g.name +
+                            "' has no change: the global look and the reference need every "
+                            "group's, {light_group=}" +
+                            g.name + "=FROM:TO");
+        }
+    }
+    const Mat3 toXyz = RgbToXyzMatrix(working.chromaticities);
+    LightGroupAccuracyResult result;
+
+    // The mixes: each light at its group's share of the luminance.
+    Spectrum from = Spectrum::Constant(360.0, 1.0, 471, 0.0);
+    Spectrum to = from;
+    for (const SpectralLightGroup& c : r.changes)
+    {
+        const std::vector<Vec3> rgb = Layer(input, c.group + ".");
+        double y = 0.0;
+        for (const Vec3& v : rgb)
+        {
+            y += (toXyz * v).y();
+        }
+        Spectrum a = c.from.spectrum.resampledLike(from);
+        Spectrum b = c.to.spectrum.resampledLike(to);
+        a *= y / IntegrateXyz(a, Observer::CIE1931_2DEG).y();
+        b *= y / IntegrateXyz(b, Observer::CIE1931_2DEG).y();
+        from += a;
+        to += b;
+        result.globalFrom += (result.globalFrom.empty() ? "" : " + ") + c.group + " " + c.from.name;
+        result.globalTo += (result.globalTo.empty() ? "" : " + ") + c.group + " " + c.to.name;
+    }
+
+    Scratch scratch;
+    // The reference: each spectral group relit exactly.
+    SpectralRequest exact;
+    exact.files.input = r.image;
+    exact.files.output = scratch.dir + "/exact.exr";
+    exact.options.workingSpace = r.workingSpace;
+    exact.options.plates.plates = "lit";
+    exact.options.lightGroups = r.changes;
+    exact.threads = r.threads;
+    auto t0 = std::chrono::steady_clock::now();
+    ConvertSpectralImages(exact, reporter);
+    result.spectralSeconds = Seconds(t0);
+    const std::vector<Vec3> reference = Layer(ReadWhole(exact.files.output), "");
+    double white = 0.0;
+    for (const Vec3& v : reference)
+    {
+        white = std::max(white, (toXyz * v).y());
+    }
+    if (!(white > 0.0))
+    {
+        throw Exception(r.image + ": the relit image is black: nothing to measure");
+    }
+    const Vec3 whiteXyz = Vec3::Ones() * white;
+    const auto deltaE = [&](const std::vector<Vec3>& image)
+    {
+        std::vector<double> d;
+        for (size_t p = 0; p < reference.size(); ++p)
+        {
+            if (reference[p].isZero(0.0))
+            {
+                continue;  // no light: background
+            }
+            d.push_back(DeltaE2000(XyzToLab(toXyz * image[p], whiteXyz),
+                                   XyzToLab(toXyz * reference[p], whiteXyz)));
+        }
+        return d;
+    };
+    const std::vector<double> none = deltaE(Layer(input, ""));
+    result.pixels = none.size();
+    result.noChangeMean = Summary(none).first;
+
+    const Light mixFrom{"mix of " + result.globalFrom, from};
+    const Light mixTo{"mix of " + result.globalTo, to};
+    for (const std::string& method : methods)
+    {
+        LightGroupAccuracyRow row;
+        row.method = method;
+        ApplyRequest global;
+        global.input = r.image;
+        global.output = scratch.dir + "/global.exr";
+        global.threads = r.threads;
+        RelightRequest change;
+        change.src = mixFrom;
+        change.dst = mixTo;
+        change.method = method;
+        change.workingSpace = r.workingSpace;
+        change.plates.plates = "lit";
+        global.relight = change;
+        t0 = std::chrono::steady_clock::now();
+        ApplyImages(global);
+        row.globalSeconds = Seconds(t0);
+        std::tie(row.globalMean, row.globalP95) =
+            Summary(deltaE(Layer(ReadWhole(global.output), "")));
+
+        ApplyRequest groups = global;
+        groups.output = scratch.dir + "/groups.exr";
+        groups.relight.reset();
+        for (const SpectralLightGroup& c : r.changes)
+        {
+            RelightRequest g = change;
+            g.src = c.from;
+            g.dst = c.to;
+            groups.lightGroups.push_back({c.group, g});
+        }
+        t0 = std::chrono::steady_clock::now();
+        ApplyImages(groups);
+        row.groupsSeconds = Seconds(t0);
+        std::tie(row.groupsMean, row.groupsP95) =
+            Summary(deltaE(Layer(ReadWhole(groups.output), "")));
+        result.rows.push_back(row);
+        reporter.progress("light groups: " + method,
+                          double(result.rows.size()) / double(methods.size()));
+    }
+    return result;
+}
+
+}  // namespace bandlight::jobs

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Light groups in memory: a dict of group → array relit per group, the
+// beauty rebuilt as Σ relit groups + residual (jobs/LightGroups), as
+// `bandlight apply --light-group` does it to files.
+#include "PyBandlight.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/jobs/LightGroups.h"
+
+namespace bandlight::python
+{
+
+namespace
+{
+using F32 = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+std::string Shape(const py::array& a)
+{
+    std::string s = "(";
+    for (py::ssize_t i = 0; i < a.ndim(); ++i)
+    {
+        s += (i ? ", " : "") + std::to_string(a.shape(i));
+    }
+    return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+/// An array of RGB pixels (last dimension 3), float32 C order.
+F32 RgbArray(const py::handle& arg, const std::string& what)
+{
+    const F32 a = F32::ensure(arg);
+    if (!a || a.ndim() < 1 || a.shape(a.ndim() - 1) != 3)
+    {
+        throw Exception(what +
+                        " must be an array of R, G, B in its last dimension, e.g. "
+                        "(height, width, 3)" +
+                        (a ? ", got shape " + Shape(a) : std::string()));
+    }
+    return a;
+}
+
+py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py::object& beauty,
+                       const std::string& method, const std::string& working,
+                       const py::object& observer, const py::object& training,
+                       const std::string& plates, const std::string& adaptation,
+                       const py::object& camera, const std::string& cameraIdt, int threadsArg)
+{
+    const int threads = ToThreads(threadsArg);
+    if (groups.empty())
+    {
+        throw Exception("groups is empty: give {name: array of R, G, B}");
+    }
+    std::vector<std::string> names;
+    std::vector<F32> arrays;
+    for (const auto& [key, value] : groups)
+    {
+        names.push_back(CastTo<std::string>(key, "a group's name", "str"));
+        arrays.push_back(RgbArray(value, "group '" + names.back() + "'"));
+        if (Shape(arrays.back()) != Shape(arrays.front()))
+        {
+            throw Exception("group '" + names.back() + "' has shape " + Shape(arrays.back()) +
+                            ", group '" + names.front() + "' " + Shape(arrays.front()) +
+                            ": every group is the same image's layer");
+        }
+    }
+    const F32& first = arrays.front();
+    const std::vector<py::ssize_t> shape(first.shape(), first.shape() + first.ndim());
+    const size_t count = size_t(first.size()) / 3;
+    const long width = first.ndim() >= 3 ? long(shape[shape.size() - 2]) : long(count);
+    const long height = width > 0 ? long(count) / width : 0;
+    std::optional<F32> beautyIn;
+    if (!beauty.is_none())
+    {
+        beautyIn = RgbArray(beauty, "beauty");
+        if (Shape(*beautyIn) != Shape(first))
+        {
+            throw Exception("beauty has shape " + Shape(*beautyIn) + ", the groups " +
+                            Shape(first));
+        }
+    }
+
+    // The works: one relighter per change; a group relit to its own light
+    // is carried exactly.
+    jobs::LightGroupLayout layout;
+    layout.beauty[0] = 0;
+    layout.beauty[1] = 1;
+    layout.beauty[2] = 2;
+    for (size_t g = 0; g < names.size(); ++g)
+    {
+        jobs::LightGroupLayer l;
+        l.name = names[g];
+        l.layer = names[g];
+        l.naming = jobs::LightGroupNaming::MAPPED;
+        for (int c = 0; c < 3; ++c)
+        {
+            l.rgb[c] = int(3 + 3 * g) + c;
+        }
+        layout.groups.push_back(l);
+    }
+    std::map<std::string, jobs::LightGroupWork> works;
+    std::string applied;
+    for (const auto& [key, value] : changes)
+    {
+        const std::string name = CastTo<std::string>(key, "a change's group", "str");
+        if (!layout.find(name))
+        {
+            std::string have;
+            for (const std::string& n : names)
+            {
+                have += (have.empty() ? "" : ", ") + n;
+            }
+            throw Exception("changes names the light group '" + name +
+                            "', which groups does not hold (it has " + have + ")");
+        }
+        const py::tuple lights =
+            CastTo<py::tuple>(value, "changes['" + name + "']", "a tuple (src, dst)");
+        if (lights.size() != 2)
+        {
+            throw Exception("changes['" + name + "'] must be (src, dst)");
+        }
+        const Light from = ToLight(lights[0]);
+        const Light to = ToLight(lights[1]);
+        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
+        const MethodSpec spec = ToMethod(method, training, platesArgs);
+        if (from.spectrum.sameGrid(to.spectrum) && from.spectrum.values() == to.spectrum.values())
+        {
+            continue;
+        }
+        const auto relighter = std::make_shared<Relighter>(from, to, spec, FindRgbSpace(working),
+                                                           ToObserver(observer));
+        works[name] =
+            jobs::RgbWork([relighter](float* p, size_t n) { relighter->apply(p, n, 1); }, threads);
+    }
+
+    const size_t channels = 3 + 3 * names.size();
+    std::vector<float> buffer(count * channels);
+    for (size_t g = 0; g < arrays.size(); ++g)
+    {
+        const float* src = arrays[g].data();
+        for (size_t p = 0; p < count; ++p)
+        {
+            std::copy_n(src + 3 * p, 3, &buffer[p * channels + 3 + 3 * g]);
+        }
+    }
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            double sum = 0.0;
+            for (size_t g = 0; g < arrays.size(); ++g)
+            {
+                sum += buffer[p * channels + 3 + 3 * g + size_t(c)];
+            }
+            buffer[p * channels + size_t(c)] =
+                beautyIn ? beautyIn->data()[3 * p + size_t(c)] : float(sum);
+        }
+    }
+    {
+        py::gil_scoped_release release;
+        jobs::RelightLightGroups(layout, works, buffer.data(), width, height, int(channels),
+                                 "light groups");
+    }
+    py::dict relit;
+    for (size_t g = 0; g < names.size(); ++g)
+    {
+        py::array_t<float> a(shape);
+        float* dst = a.mutable_data();
+        for (size_t p = 0; p < count; ++p)
+        {
+            std::copy_n(&buffer[p * channels + 3 + 3 * g], 3, dst + 3 * p);
+        }
+        relit[py::str(names[g])] = a;
+    }
+    py::array_t<float> newBeauty(shape);
+    float* dst = newBeauty.mutable_data();
+    for (size_t p = 0; p < count; ++p)
+    {
+        std::copy_n(&buffer[p * channels], 3, dst + 3 * p);
+    }
+    py::dict out;
+    out["beauty"] = newBeauty;
+    out["groups"] = relit;
+    return out;
+}
+}  // namespace
+
+void AddLightGroups(py::module_& m)
+{
+    m.def("relight_light_groups", &RelightGroups, py::arg("groups"), py::arg("changes"),
+          py::kw_only(), py::arg("beauty") = py::none(), py::arg("method") = defaults::METHOD,
+          py::arg("working_space") = defaults::WORKING_SPACE,
+          py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
+          py::arg("plates") = defaults::LIGHT_GROUP_PLATES,
+          py::arg("adaptation") = defaults::ADAPTATION, py::arg("camera") = py::none(),
+          py::arg("camera_idt") = defaults::IDT_LIGHT, py::arg("threads") = defaults::THREADS,
+          R"doc(Relights light groups in memory, each from its own light to a new one.
+
+groups: {name: array of R, G, B in its last dimension}, every group the same
+shape (layers of one image, working-space linear RGB). changes: {name: (src,
+dst)}, the lights as relight() takes them; groups not named are carried
+unchanged, and a group relit to its own light too. beauty: the image the
+groups sum to (same shape); what they do not hold, beauty - sum(groups), is
+kept as the residual. None: the sum of the groups.
+
+Returns {"beauty": sum of relit groups + residual, "groups": {name: relit
+array}}: plain dicts of numpy arrays, which pickle (for Dask). Raises
+ValueError when the groups sum to more than the beauty beyond float rounding
+(not a partition of it) or hold NaN or infinity, naming the group and pixel.
+plates defaults to lit: a render's group carries its own light's cast.)doc");
+}
+
+}  // namespace bandlight::python

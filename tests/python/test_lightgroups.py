@@ -1,0 +1,105 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Light groups in memory: relight_light_groups relights each group of a dict
+of arrays on its own and rebuilds the beauty with the residual, as
+`bandlight apply --light-group` does to files."""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import bandlight
+
+
+def shot():
+    rng = np.random.default_rng(7)
+    key = rng.uniform(0.0, 2.0, (4, 5, 3)).astype(np.float32)
+    fill = rng.uniform(0.0, 0.5, (4, 5, 3)).astype(np.float32)
+    emission = np.zeros((4, 5, 3), np.float32)
+    emission[1, 2] = (3.0, 2.0, 1.0)
+    return key, fill, (key.astype(np.float64) + fill + emission).astype(np.float32)
+
+
+def test_each_group_relit_as_relight_does_and_the_residual_kept():
+    key, fill, beauty = shot()
+    out = bandlight.relight_light_groups({"key": key, "fill": fill}, {"key": ("A", "D65")},
+                                         beauty=beauty, method="rootpoly")
+    expected = bandlight.relight(key, "A", "D65", "rootpoly", plates="lit")
+    np.testing.assert_allclose(out["groups"]["key"], expected, rtol=1e-6, atol=1e-7)
+    np.testing.assert_array_equal(out["groups"]["fill"], fill)
+    residual = beauty.astype(np.float64) - key - fill
+    np.testing.assert_allclose(out["beauty"], expected.astype(np.float64) + fill + residual,
+                               rtol=1e-6, atol=1e-6)
+    assert out["beauty"][1, 2, 0] == pytest.approx(expected[1, 2, 0] + fill[1, 2, 0] + 3.0,
+                                                   rel=1e-6)
+    # Plain dicts of arrays: they pickle, for Dask.
+    back = pickle.loads(pickle.dumps(out))
+    np.testing.assert_array_equal(back["beauty"], out["beauty"])
+
+
+def test_identity_gives_the_beauty_back():
+    key, fill, beauty = shot()
+    out = bandlight.relight_light_groups({"key": key, "fill": fill},
+                                         {"key": ("A", "A"), "fill": ("F11", "F11")},
+                                         beauty=beauty, method="rootpoly")
+    np.testing.assert_allclose(out["beauty"], beauty, rtol=1e-6, atol=1e-7)
+
+
+def test_without_a_beauty_it_is_the_sum_of_the_groups():
+    key, fill, _ = shot()
+    out = bandlight.relight_light_groups({"key": key, "fill": fill}, {"fill": ("F11", "D50")})
+    np.testing.assert_allclose(out["beauty"],
+                               key.astype(np.float64) + out["groups"]["fill"], rtol=1e-6)
+
+
+def test_bad_input_is_refused_naming_the_group():
+    key, fill, beauty = shot()
+    with pytest.raises(ValueError, match="which groups does not hold"):
+        bandlight.relight_light_groups({"key": key}, {"rim": ("A", "D65")})
+    with pytest.raises(ValueError, match="sum to more than the beauty"):
+        bandlight.relight_light_groups({"key": key, "fill": fill}, {"key": ("A", "D65")},
+                                       beauty=key)
+    nan = fill.copy()
+    nan[0, 1, 2] = np.nan
+    with pytest.raises(ValueError, match="light group 'fill' is NaN at pixel \\(1, 0\\)"):
+        bandlight.relight_light_groups({"key": key, "fill": nan}, {"key": ("A", "D65")},
+                                       beauty=beauty)
+    with pytest.raises(ValueError, match="same image's layer"):
+        bandlight.relight_light_groups({"key": key, "fill": fill[:2]}, {"key": ("A", "D65")})
+
+
+def test_render_and_apply_files_with_light_groups(tmp_path):
+    from conftest import SCENES
+    shot = tmp_path / "shot.exr"
+    result = bandlight.render(SCENES / "two_lights.yaml", out=shot, light_groups=True,
+                              mode="band3", preview=False)
+    assert result["files"] == [str(shot)]
+    relit = tmp_path / "relit.exr"
+    with pytest.warns(bandlight.NoteWarning, match="2 light groups \\(key, fill\\), bandlight"):
+        summary = bandlight.apply(shot, relit, light_groups={"key": ("A", "D65")},
+                                  method="rootpoly")
+    assert "key: rootpoly_A_to_D65" in summary["applied"]
+    assert summary["frames"] == 1 and relit.is_file()
+    with pytest.raises(ValueError, match="has no light group 'rim'"):
+        bandlight.apply(shot, tmp_path / "bad.exr", light_groups={"rim": ("A", "D65")})
+    assert not (tmp_path / "bad.exr").exists()
+
+
+def test_spectral_light_groups_exact_and_named(tmp_path):
+    from conftest import SCENES
+    shot = tmp_path / "shot.exr"
+    bandlight.render(SCENES / "two_lights.yaml", out=shot, light_groups=True, spectra=True,
+                     preview=False)
+    same = tmp_path / "same.exr"
+    summary = bandlight.spectral(shot, same, light_groups={"key": ("A", "A"),
+                                                           "fill": ("F11", "F11")})
+    assert "light groups" in summary["applied"]
+    integrated = tmp_path / "integrated.exr"
+    bandlight.spectral(shot, integrated, plates="lit")
+    with pytest.raises(ValueError, match="has no spectral light group 'rim'"):
+        bandlight.spectral(shot, tmp_path / "bad.exr", light_groups={"rim": ("A", "D65")})
+    with pytest.raises(ValueError, match="plates=lit"):
+        bandlight.spectral(shot, tmp_path / "bad.exr", light_groups={"key": ("A", "D65")},
+                           plates="balanced")
+    assert not (tmp_path / "bad.exr").exists()
+    assert same.is_file() and integrated.is_file()
