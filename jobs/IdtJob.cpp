@@ -343,8 +343,6 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
     };
     for (size_t i = 0; i < planned.size(); ++i)
     {
-        reporter.progress("fitting the IDT for " + planned[i].light.name,
-                          double(i) / double(planned.size() + 1));
         result.idts.push_back(entryFor(planned[i].light.name, *planned[i].problem));
     }
     if (result.chart)
@@ -386,7 +384,8 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
             EstimateAsShot(*camera, CheckedNeutral(r.asShotNeutral), working, adaptation, observer);
         result.hasAsShot = true;
         std::ostringstream name;
-        name << "as shot " << std::lround(result.asShot.cct) << "K";
+        name << "as shot (" << result.asShot.family << " "
+             << std::lround(result.asShot.familyKelvin) << "K)";
         const IdtProblem problem(*camera, result.asShot.light, working, adaptation, observer);
         result.idts.push_back(entryFor(name.str(), problem));
     }
