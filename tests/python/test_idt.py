@@ -2,6 +2,8 @@
 """bandlight.idt: the document `bandlight idt --json` writes, with numpy
 matrices and the written config as a PyOpenColorIO.Config."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -41,3 +43,31 @@ def test_idt_refuses_a_zero_neutral():
         bandlight.idt(D21, as_shot_neutral=(0.5, 0.0, 0.8))
     with pytest.raises(ValueError, match="interpolate"):
         bandlight.idt(D21, interpolate=["3200K"])
+
+
+def _rows(path):
+    return [l.split(",") for l in path.read_text().splitlines()
+            if l.strip() and not l.startswith("#") and l[0].isdigit()]
+
+
+def test_chart_idt_from_simulated_rgb_equals_the_sensitivity_idt(tmp_path):
+    # The 190 as a chart, its camera RGB simulated from the D21's
+    # sensitivities under D55 (both 380-780 nm at 5 nm).
+    chart = SOURCE_DIR / "data/ref/rawtoaces_190.csv"
+    reflect = np.array([[float(v) for v in r[1:]] for r in _rows(chart)])
+    light = np.array([float(r[1]) for r in _rows(SOURCE_DIR / "data/illuminant/D55.csv")])
+    camera = json.loads(D21.read_text())["spectral_data"]["data"]["main"]
+    sens = np.array([camera[str(nm)] for nm in range(380, 785, 5)])
+    assert reflect.shape == (81, 190) and light.shape == (81,)
+    raw = (reflect * light[:, None]).T @ sens
+    csv = tmp_path / "chart.csv"
+    csv.write_text("name,R,G,B\n" + "".join(f"p{i},{r:.17g},{g:.17g},{b:.17g}\n"
+                                           for i, (r, g, b) in enumerate(raw)))
+    with pytest.warns(bandlight.NoteWarning, match="patch18"):  # a -1.7e-18 in the file
+        from_chart = bandlight.idt(chart_rgb=csv, chart=chart, light="D55")
+    from_camera = bandlight.idt(D21, "D55")
+    assert from_chart["chart"]["patches"] == 190
+    np.testing.assert_allclose(from_chart["idts"][0]["matrix"], from_camera["idts"][0]["matrix"],
+                               atol=1e-6)
+    np.testing.assert_allclose(from_chart["idts"][0]["gains"], from_camera["idts"][0]["gains"],
+                               atol=1e-9)
