@@ -79,6 +79,11 @@ void RunIdt(IdtCommandOptions& o, const CLI::App& cmd)
                                  " is '' (an empty path): name it, or leave the option out");
         }
     }
+    if (!r.chartRgb.empty() && cmd.count("--test-set") > 0)
+    {
+        throw ParameterError("--test-set is for IDTs from sensitivities: a chart IDT's error is "
+                             "measured on the chart");
+    }
     // With --json - stdout carries the JSON alone.
     const bool toStdout = r.json == "-";
     if (toStdout)
@@ -140,6 +145,9 @@ void AddIdtCommand(CLI::App& app)
                     "B): the IDT without sensitivities");
     cmd->add_option("--chart", r.chart, "With --chart-rgb: the chart's remittances (a file, or TCS)");
     cmd->add_option("--light", r.chartLight, "With --chart-rgb: the light the chart was shot under");
+    cmd->add_option("--rootpoly", r.chartRootPolynomial,
+                    "With --chart-rgb: also fit a root polynomial of degree 2 or 3 on the chart "
+                    "(exposure invariant) and report its error");
     cmd->add_option("--json", r.json, "Write the IDTs as JSON to FILE (- for stdout)");
     cmd->add_option("--config", r.config,
                     "Write an OCIO v2 config with one input colour space per light (and a CLF "

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -140,6 +141,13 @@ void CheckOptions(const IdtRequest& r)
         {
             throw ParameterError("a chart IDT needs {chart_rgb}, {chart} and {light} together");
         }
+        if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 &&
+            r.chartRootPolynomial != 3)
+        {
+            throw ParameterError("{rootpoly} is the degree of the chart's root polynomial: 2 "
+                                 "or 3, not " +
+                                 std::to_string(r.chartRootPolynomial));
+        }
         if (!r.camera.empty() || !r.lights.empty() || !r.interpolate.empty() ||
             !r.asShotNeutral.empty() || !r.training.empty())
         {
@@ -160,6 +168,11 @@ void CheckOptions(const IdtRequest& r)
             throw ParameterError("name the lights to fit IDTs for ({lights}), two to "
                                  "{interpolate} between, or an {as_shot_neutral}");
         }
+    }
+    if (!chart && r.chartRootPolynomial != 0)
+    {
+        throw ParameterError("{rootpoly} is fitted on a chart: give {chart_rgb}, {chart} and "
+                             "{light}");
     }
     if (!r.interpolate.empty() && r.interpolate.size() != 2)
     {
@@ -358,19 +371,30 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         // The chart is its own training set: its error is the fit's.
         const ColourFit d =
             ChartFitData(chartRgb, chart, chartLight.spectrum, working, adaptation, observer);
-        IdtError err;
-        err.set = r.chart;
-        err.count = int(chart.size());
-        std::vector<double> de;
-        for (size_t i = 0; i < d.input.size(); ++i)
+        const auto chartError = [&](const std::function<Vec3(const Vec3&)>& apply)
         {
-            de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * (e.fit.matrix * d.input[i]), d.labWhite),
-                                    XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
-            err.mean += de.back() / double(d.input.size());
-            err.max = std::max(err.max, de.back());
+            IdtError err;
+            err.set = r.chart;
+            err.count = int(chart.size());
+            std::vector<double> de;
+            for (size_t i = 0; i < d.input.size(); ++i)
+            {
+                de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * apply(d.input[i]), d.labWhite),
+                                        XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
+                err.mean += de.back() / double(d.input.size());
+                err.max = std::max(err.max, de.back());
+            }
+            err.p95 = Percentile(de, 0.95);
+            return err;
+        };
+        e.errors.push_back(chartError([&](const Vec3& c) { return Vec3(e.fit.matrix * c); }));
+        if (r.chartRootPolynomial != 0)
+        {
+            result.chartRootPolynomial = FitRootPolynomial(d, r.chartRootPolynomial);
+            result.chartRootPolynomialError =
+                chartError([&](const Vec3& c) { return result.chartRootPolynomial.apply(c); });
+            result.hasChartRootPolynomial = true;
         }
-        err.p95 = Percentile(de, 0.95);
-        e.errors.push_back(err);
         result.trainingName = r.chart;
         result.trainingCount = int(chart.size());
         result.testName.clear();
@@ -517,6 +541,25 @@ std::string IdtDocument(const IdtResult& r)
     if (r.chart)
     {
         j["chart"] = {{"patches", r.trainingCount}, {"neutral_patch", r.chartNeutral}};
+        if (r.hasChartRootPolynomial)
+        {
+            const Eigen::MatrixXd& m = r.chartRootPolynomial.matrix();
+            nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+            for (int row = 0; row < 3; ++row)
+            {
+                std::vector<double> v(size_t(m.cols()));
+                for (int c = 0; c < m.cols(); ++c)
+                {
+                    v[size_t(c)] = m(row, c);
+                }
+                rows.push_back(v);
+            }
+            const IdtError& e = r.chartRootPolynomialError;
+            j["chart"]["rootpoly"] = {
+                {"degree", r.chartRootPolynomial.degree()},
+                {"matrix", rows},
+                {"error", {{e.set, {{"mean", e.mean}, {"p95", e.p95}, {"max", e.max}}}}}};
+        }
     }
     return j.dump(2);
 }
@@ -530,6 +573,13 @@ std::string IdtReport(const IdtResult& r)
         o << "Chart IDT: " << r.trainingCount << " patches of " << r.trainingName
           << ", white balance from " << r.chartNeutral << "; to " << ws.displayName << " ("
           << r.adaptation << ")\n";
+        if (r.hasChartRootPolynomial)
+        {
+            const IdtError& e = r.chartRootPolynomialError;
+            o << "Root polynomial of degree " << r.chartRootPolynomial.degree()
+              << " on the chart (exposure invariant): dE00 mean " << Fixed(e.mean, 3) << ", p95 "
+              << Fixed(e.p95, 3) << ", max " << Fixed(e.max, 3) << "\n";
+        }
     }
     else
     {

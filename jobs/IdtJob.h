@@ -41,6 +41,10 @@ struct IdtRequest
     std::string chartRgb;
     std::string chart;
     std::string chartLight;
+    /// With a chart: also fit a root polynomial of this degree (2 or 3;
+    /// 0 none) on it, exposure invariant (Finlayson et al. 2015), and report
+    /// its error beside the 3×3's.
+    int chartRootPolynomial = defaults::IDT_CHART_ROOTPOLY;
     /// Write the JSON document here ("" none).
     std::string json;
     /// Write a new OCIO v2 config of the input spaces into this folder.
@@ -91,6 +95,11 @@ struct IdtResult
     std::vector<IdtInterpolationPoint> interpolation;
     bool chart = false;       ///< fitted from a chart
     std::string chartNeutral; ///< the chart patch that set the white balance
+    /// With chartRootPolynomial: its fit on the chart (balanced camera RGB →
+    /// working RGB) and its error there.
+    RootPolynomial chartRootPolynomial;
+    IdtError chartRootPolynomialError;
+    bool hasChartRootPolynomial = false;
     std::vector<std::string> written;
 };
 

@@ -306,7 +306,7 @@ def idt(camera: Optional[StrPath] = None, lights: Union[str, Sequence[StrPath], 
         observer: ObserverLike = "1931", training: Optional[StrPath] = None,
         test_set: StrPath = "TCS", interpolate: Union[str, Sequence[StrPath], None] = None,
         as_shot_neutral: Optional[Sequence[float]] = None, chart_rgb: Optional[StrPath] = None,
-        chart: Optional[StrPath] = None, light: Optional[StrPath] = None,
+        chart: Optional[StrPath] = None, light: Optional[StrPath] = None, rootpoly: int = 0,
         json: Optional[StrPath] = None, config: Optional[StrPath] = None,
         base: Optional[StrPath] = None, out: Optional[StrPath] = None) -> Dict[str, Any]: ...
 def frame_set(text: str) -> List[int]: ...

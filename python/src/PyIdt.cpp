@@ -44,7 +44,8 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                const py::object& observer, const std::optional<Path>& training,
                const py::object& testSet, const py::object& interpolate,
                const py::object& asShotNeutral, const std::optional<Path>& chartRgb,
-               const py::object& chart, const py::object& light, const std::optional<Path>& json,
+               const py::object& chart, const py::object& light, int rootpoly,
+               const std::optional<Path>& json,
                const std::optional<Path>& config, const std::optional<Path>& base,
                const std::optional<Path>& out)
 {
@@ -71,6 +72,7 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
     r.chartRgb = OptionalPath(chartRgb);
     r.chart = chart.is_none() ? "" : PathText(chart, "chart");
     r.chartLight = light.is_none() ? "" : PathText(light, "light");
+    r.chartRootPolynomial = rootpoly;
     r.json = OptionalPath(json);
     r.config = OptionalPath(config);
     r.base = OptionalPath(base);
@@ -108,7 +110,7 @@ void AddIdt(py::module_& m)
           py::arg("training") = py::none(), py::arg("test_set") = defaults::IDT_TEST_SET,
           py::arg("interpolate") = py::none(), py::arg("as_shot_neutral") = py::none(),
           py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
-          py::arg("light") = py::none(), py::arg("json") = py::none(),
+          py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY, py::arg("json") = py::none(),
           py::arg("config") = py::none(), py::arg("base") = py::none(),
           py::arg("out") = py::none(), R"doc(
 Camera input transforms (IDTs): the job of ``bandlight idt``, returning the
@@ -126,7 +128,9 @@ document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
   "family_kelvin", "light"} (the IDT for it is the last of "idts");
 - "interpolation" with interpolate: the IDT interpolated in mired between
   the two lights against one fitted at each CCT, 2800-6500 K;
-- "chart" with chart_rgb: {"patches", "neutral_patch"};
+- "chart" with chart_rgb: {"patches", "neutral_patch"}, and with rootpoly=2
+  or 3 "rootpoly": {"degree", "matrix", "error"}, a root polynomial fitted
+  on the chart (exposure invariant);
 - "config": the config written (config= or base= with out=), as a
   PyOpenColorIO.Config, else None.
 

@@ -64,9 +64,14 @@ def test_chart_idt_from_simulated_rgb_equals_the_sensitivity_idt(tmp_path):
     csv.write_text("name,R,G,B\n" + "".join(f"p{i},{r:.17g},{g:.17g},{b:.17g}\n"
                                            for i, (r, g, b) in enumerate(raw)))
     with pytest.warns(bandlight.NoteWarning, match="patch18"):  # a -1.7e-18 in the file
-        from_chart = bandlight.idt(chart_rgb=csv, chart=chart, light="D55")
+        from_chart = bandlight.idt(chart_rgb=csv, chart=chart, light="D55", rootpoly=2)
     from_camera = bandlight.idt(D21, "D55")
     assert from_chart["chart"]["patches"] == 190
+    # The root polynomial has more freedom: on its own chart it fits better.
+    poly = from_chart["chart"]["rootpoly"]
+    assert poly["degree"] == 2 and len(poly["matrix"][0]) == 6
+    chart_error = from_chart["idts"][0]["error"][str(chart)]["mean"]
+    assert 0.0 < poly["error"][str(chart)]["mean"] < chart_error
     np.testing.assert_allclose(from_chart["idts"][0]["matrix"], from_camera["idts"][0]["matrix"],
                                atol=1e-6)
     np.testing.assert_allclose(from_chart["idts"][0]["gains"], from_camera["idts"][0]["gains"],
