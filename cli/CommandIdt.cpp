@@ -6,10 +6,10 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/Commands.h"
-#include "cli/Common.h"
 #include "bandlight/jobs/IdtJob.h"
 #include "bandlight/spectral/RgbSpaces.h"
+#include "cli/Commands.h"
+#include "cli/Common.h"
 
 namespace bandlight::cli
 {
@@ -81,8 +81,9 @@ void RunIdt(IdtCommandOptions& o, const CLI::App& cmd)
     }
     if (!r.chartRgb.empty() && cmd.count("--test-set") > 0)
     {
-        throw ParameterError("--test-set is for IDTs from sensitivities: a chart IDT's error is "
-                             "measured on the chart");
+        throw ParameterError(
+            "--test-set is for IDTs from sensitivities: a chart IDT's error is "
+            "measured on the chart");
     }
     // With --json - stdout carries the JSON alone.
     const bool toStdout = r.json == "-";
@@ -143,8 +144,10 @@ void AddIdtCommand(CLI::App& app)
     cmd->add_option("--chart-rgb", r.chartRgb,
                     "CSV of a photographed chart's camera RGB, one row per patch ([name,] R, G, "
                     "B): the IDT without sensitivities");
-    cmd->add_option("--chart", r.chart, "With --chart-rgb: the chart's remittances (a file, or TCS)");
-    cmd->add_option("--light", r.chartLight, "With --chart-rgb: the light the chart was shot under");
+    cmd->add_option("--chart", r.chart,
+                    "With --chart-rgb: the chart's remittances (a file, or TCS)");
+    cmd->add_option("--light", r.chartLight,
+                    "With --chart-rgb: the light the chart was shot under");
     cmd->add_option("--rootpoly", r.chartRootPolynomial,
                     "With --chart-rgb: also fit a root polynomial of degree 2 or 3 on the chart "
                     "(exposure invariant) and report its error");

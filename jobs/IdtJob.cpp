@@ -124,8 +124,9 @@ Vec3 CheckedNeutral(const std::vector<double>& n)
     {
         if (!(v > 0.0) || !std::isfinite(v))
         {
-            throw ParameterError("{as_shot_neutral} has a channel that is zero, negative or not "
-                                 "finite: a neutral has three positive channels");
+            throw ParameterError(
+                "{as_shot_neutral} has a channel that is zero, negative or not "
+                "finite: a neutral has three positive channels");
         }
     }
     return {n[0], n[1], n[2]};
@@ -141,38 +142,42 @@ void CheckOptions(const IdtRequest& r)
         {
             throw ParameterError("a chart IDT needs {chart_rgb}, {chart} and {light} together");
         }
-        if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 &&
-            r.chartRootPolynomial != 3)
+        if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 && r.chartRootPolynomial != 3)
         {
-            throw ParameterError("{rootpoly} is the degree of the chart's root polynomial: 2 "
-                                 "or 3, not " +
-                                 std::to_string(r.chartRootPolynomial));
+            throw ParameterError(
+                "{rootpoly} is the degree of the chart's root polynomial: 2 "
+                "or 3, not " +
+                std::to_string(r.chartRootPolynomial));
         }
         if (!r.camera.empty() || !r.lights.empty() || !r.interpolate.empty() ||
             !r.asShotNeutral.empty() || !r.training.empty())
         {
-            throw ParameterError("a chart IDT is fitted on the chart under its {light}: "
-                                 "{camera}, {lights}, {training}, {interpolate} and "
-                                 "{as_shot_neutral} are for sensitivities");
+            throw ParameterError(
+                "a chart IDT is fitted on the chart under its {light}: "
+                "{camera}, {lights}, {training}, {interpolate} and "
+                "{as_shot_neutral} are for sensitivities");
         }
     }
     else
     {
         if (r.camera.empty())
         {
-            throw ParameterError("give the camera's sensitivities as {camera=}FILE (or a chart "
-                                 "with {chart_rgb}, {chart} and {light})");
+            throw ParameterError(
+                "give the camera's sensitivities as {camera=}FILE (or a chart "
+                "with {chart_rgb}, {chart} and {light})");
         }
         if (r.lights.empty() && r.interpolate.empty() && r.asShotNeutral.empty())
         {
-            throw ParameterError("name the lights to fit IDTs for ({lights}), two to "
-                                 "{interpolate} between, or an {as_shot_neutral}");
+            throw ParameterError(
+                "name the lights to fit IDTs for ({lights}), two to "
+                "{interpolate} between, or an {as_shot_neutral}");
         }
     }
     if (!chart && r.chartRootPolynomial != 0)
     {
-        throw ParameterError("{rootpoly} is fitted on a chart: give {chart_rgb}, {chart} and "
-                             "{light}");
+        throw ParameterError(
+            "{rootpoly} is fitted on a chart: give {chart_rgb}, {chart} and "
+            "{light}");
     }
     if (!r.interpolate.empty() && r.interpolate.size() != 2)
     {
@@ -189,13 +194,15 @@ void CheckOptions(const IdtRequest& r)
     }
     if (!r.out.empty() && r.base.empty())
     {
-        throw ParameterError("{out} is where an extended {base} config goes; for a new config "
-                             "give {config=}DIR");
+        throw ParameterError(
+            "{out} is where an extended {base} config goes; for a new config "
+            "give {config=}DIR");
     }
     if (!r.config.empty() && !r.base.empty())
     {
-        throw ParameterError("{config} writes a new config, {base} with {out} extends one: "
-                             "give one of them");
+        throw ParameterError(
+            "{config} writes a new config, {base} with {out} extends one: "
+            "give one of them");
     }
 }
 
@@ -221,8 +228,8 @@ std::string Describe(const IdtEntry& e, const std::string& camera, const IdtResu
       << Fixed(e.duv, 4) << "): raw camera RGB to " << FindRgbSpace(r.workingSpace).displayName
       << ", white-balance gains R " << Fixed(e.fit.gains.x(), 4) << ", G 1, B "
       << Fixed(e.fit.gains.z(), 4) << " folded in, then the 3x3 fitted as rawtoaces fits it (white "
-      << "kept, CIELAB error of " << r.trainingName << " minimised, " << AdaptationName(
-             ParsePlates("balanced", r.adaptation).adaptation)
+      << "kept, CIELAB error of " << r.trainingName << " minimised, "
+      << AdaptationName(ParsePlates("balanced", r.adaptation).adaptation)
       << " to the working white). Training error " << Fixed(e.errors.front().mean, 2)
       << " dE00 mean, " << Fixed(e.errors.front().max, 2) << " max; " << r.testName << " "
       << Fixed(e.errors.back().mean, 2) << " mean. Generated by `bandlight idt`.";
@@ -339,6 +346,19 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
             result.interpolateTo = int(planned.size());
             plan(r.interpolate[1]);
         }
+        // One colour space per light: two lights of one name would clash.
+        for (size_t i = 0; i < planned.size(); ++i)
+        {
+            for (size_t k = 0; k < i; ++k)
+            {
+                if (planned[i].light.name == planned[k].light.name)
+                {
+                    throw ParameterError("the light '" + planned[i].light.name +
+                                         "' is named twice ({lights}, {interpolate}): give "
+                                         "each once");
+                }
+            }
+        }
     }
 
     // The fits.
@@ -436,10 +456,10 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
             }
             p.interpolatedMean = problem.errors(m, test, r.testSet).mean;
             p.directMean = problem.errors(direct.matrix, test, r.testSet).mean;
-            p.clampedMean =
-                problem.errors(InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k), test,
-                               r.testSet)
-                    .mean;
+            p.clampedMean = problem
+                                .errors(InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k),
+                                        test, r.testSet)
+                                .mean;
             result.interpolation.push_back(p);
         }
     }
@@ -457,9 +477,8 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         for (IdtEntry& e : result.idts)
         {
             e.colorSpace = IdtColorSpaceName(result.camera, e.light);
-            c.inputSpaces.push_back(
-                {e.colorSpace, Describe(e, result.camera, result), e.fit.rawToWorking(),
-                 working.name});
+            c.inputSpaces.push_back({e.colorSpace, Describe(e, result.camera, result),
+                                     e.fit.rawToWorking(), working.name});
         }
         MakeConfig(c, reporter, &outputs);
         result.written.push_back(*c.out + "/config.ocio");
@@ -513,12 +532,9 @@ std::string IdtDocument(const IdtResult& r)
     }
     if (r.hasAsShot)
     {
-        j["as_shot"] = {{"neutral", r.asShotNeutral},
-                        {"cct", r.asShot.cct},
-                        {"duv", r.asShot.duv},
-                        {"nearest", r.asShot.nearest},
-                        {"family", r.asShot.family},
-                        {"family_kelvin", r.asShot.familyKelvin},
+        j["as_shot"] = {{"neutral", r.asShotNeutral},  {"cct", r.asShot.cct},
+                        {"duv", r.asShot.duv},         {"nearest", r.asShot.nearest},
+                        {"family", r.asShot.family},   {"family_kelvin", r.asShot.familyKelvin},
                         {"light", r.idts.back().light}};
     }
     if (r.interpolateFrom >= 0)
@@ -589,7 +605,8 @@ std::string IdtReport(const IdtResult& r)
     }
     for (const IdtEntry& e : r.idts)
     {
-        o << "\n" << e.light << ": CCT " << Fixed(e.cct, 0) << " K, Duv " << Fixed(e.duv, 4)
+        o << "\n"
+          << e.light << ": CCT " << Fixed(e.cct, 0) << " K, Duv " << Fixed(e.duv, 4)
           << "\n  gains     " << Fixed(e.fit.gains.x(), 6) << " " << Fixed(e.fit.gains.y(), 6)
           << " " << Fixed(e.fit.gains.z(), 6) << "\n  matrix    " << Row(e.fit.matrix, 0)
           << "\n            " << Row(e.fit.matrix, 1) << "\n            " << Row(e.fit.matrix, 2)
@@ -610,8 +627,7 @@ std::string IdtReport(const IdtResult& r)
         o << "\nAs-shot neutral " << r.asShotNeutral[0] << "," << r.asShotNeutral[1] << ","
           << r.asShotNeutral[2] << ": CCT " << Fixed(r.asShot.cct, 0) << " K, Duv "
           << Fixed(r.asShot.duv, 4) << " (" << r.asShot.family << " "
-          << Fixed(r.asShot.familyKelvin, 0) << " K matches), nearest " << r.asShot.nearest
-          << "\n";
+          << Fixed(r.asShot.familyKelvin, 0) << " K matches), nearest " << r.asShot.nearest << "\n";
     }
     if (r.interpolateFrom >= 0)
     {

@@ -93,8 +93,8 @@ struct IdtResult
     int interpolateFrom = -1;
     int interpolateTo = -1;
     std::vector<IdtInterpolationPoint> interpolation;
-    bool chart = false;       ///< fitted from a chart
-    std::string chartNeutral; ///< the chart patch that set the white balance
+    bool chart = false;        ///< fitted from a chart
+    std::string chartNeutral;  ///< the chart patch that set the white balance
     /// With chartRootPolynomial: its fit on the chart (balanced camera RGB →
     /// working RGB) and its error there.
     RootPolynomial chartRootPolynomial;

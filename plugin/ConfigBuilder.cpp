@@ -232,8 +232,8 @@ void AddInputSpaces(ConfigPackage& package, const ConfigOptions& o, const RgbSpa
             OCIO::GroupTransformRcPtr file = GuardedMatrixTransform(in.toSpace);
             file->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
                                                       in.description.c_str());
-            package.lutFiles.emplace_back(std::string(kLutFolder) + "/" + SafeName(in.name) + ".clf",
-                                          file);
+            package.lutFiles.emplace_back(
+                std::string(kLutFolder) + "/" + SafeName(in.name) + ".clf", file);
         }
         if (workingToReference)
         {

@@ -181,8 +181,8 @@ Mat3 OptimiseLabMatrix(const ColourFit& d, const Mat3& start, int* iterations)
         const double trialCost = linearise(trial, jtjTrial, jtrTrial);
         if (std::isfinite(trialCost) && trialCost <= cost)
         {
-            const bool converged = step.norm() <= 1e-13 * (1.0 + p.norm()) ||
-                                   cost - trialCost <= 1e-15 * cost;
+            const bool converged =
+                step.norm() <= 1e-13 * (1.0 + p.norm()) || cost - trialCost <= 1e-15 * cost;
             p = trial;
             cost = trialCost;
             jtj = jtjTrial;
@@ -346,8 +346,7 @@ AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
         // Mismatch of the response at `mired` (1e6 / K).
         const auto mismatch = [&](double mired)
         {
-            const Vec3 r =
-                Response(camera, f.light(std::clamp(1e6 / mired, f.lowK, kHighestCctK)));
+            const Vec3 r = Response(camera, f.light(std::clamp(1e6 / mired, f.lowK, kHighestCctK)));
             if (!(r.minCoeff() > 0.0))
             {
                 return std::numeric_limits<double>::infinity();
@@ -401,8 +400,9 @@ AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
     }
     if (!std::isfinite(best.residual))
     {
-        throw Exception(camera.label() + ": no daylight or Planckian light gives a response in "
-                                         "every channel");
+        throw Exception(camera.label() +
+                        ": no daylight or Planckian light gives a response in "
+                        "every channel");
     }
     best.familyKelvin = std::clamp(best.familyKelvin, kLowestCctK, kHighestCctK);
     best.light = best.family == std::string("daylight")

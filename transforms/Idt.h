@@ -90,11 +90,11 @@ private:
 /// An IDT fitted for one light.
 struct IdtFit
 {
-    Vec3 gains = Vec3::Ones();            ///< IdtProblem::gains
-    Mat3 matrix = Mat3::Identity();       ///< balanced camera RGB → working RGB, the optimum
-    Mat3 firstOrder = Mat3::Identity();   ///< the first-order fit it started from
-    double rmsDe76 = 0.0;                 ///< √(objective / count) at the optimum
-    double firstOrderRmsDe76 = 0.0;       ///< the same for the first-order fit
+    Vec3 gains = Vec3::Ones();           ///< IdtProblem::gains
+    Mat3 matrix = Mat3::Identity();      ///< balanced camera RGB → working RGB, the optimum
+    Mat3 firstOrder = Mat3::Identity();  ///< the first-order fit it started from
+    double rmsDe76 = 0.0;                ///< √(objective / count) at the optimum
+    double firstOrderRmsDe76 = 0.0;      ///< the same for the first-order fit
     int iterations = 0;
 
     /// Raw camera RGB → working RGB: matrix · diag(gains).
@@ -119,13 +119,13 @@ Mat3 InterpolateIdt(const Mat3& m1, double cct1, const Mat3& m2, double cct2, do
 /// What a camera's as-shot neutral says about the light.
 struct AsShotEstimate
 {
-    double cct = 0.0;        ///< K, of the estimated white (CIE 15:2004 §9.5)
-    double duv = 0.0;        ///< its distance from the Planckian locus in CIE 1960 UCS
-    std::string family;      ///< "daylight" or "planckian": the light whose response matched
+    double cct = 0.0;           ///< K, of the estimated white (CIE 15:2004 §9.5)
+    double duv = 0.0;           ///< its distance from the Planckian locus in CIE 1960 UCS
+    std::string family;         ///< "daylight" or "planckian": the light whose response matched
     double familyKelvin = 0.0;  ///< that light's temperature parameter
-    double residual = 0.0;   ///< log-chromaticity mismatch of its response (0: exact)
-    std::string nearest;     ///< the standard illuminant nearest in CIE 1960 (u, v)
-    Spectrum light;          ///< the matched light, to fit the IDT for
+    double residual = 0.0;      ///< log-chromaticity mismatch of its response (0: exact)
+    std::string nearest;        ///< the standard illuminant nearest in CIE 1960 (u, v)
+    Spectrum light;             ///< the matched light, to fit the IDT for
 };
 
 /// The daylight (4000–25000 K) or Planckian (1000–25000 K) light whose raw
@@ -155,7 +155,7 @@ IdtFit FitChartIdt(const std::vector<Vec3>& raw, const std::vector<NamedSpectrum
 
 /// The chart's targets and balanced inputs as FitChartIdt fits them.
 ColourFit ChartFitData(const std::vector<Vec3>& raw, const std::vector<NamedSpectrum>& chart,
-                       const Spectrum& light, const RgbSpace& working,
-                       AdaptationMethod adaptation, Observer observer, Vec3* gains = nullptr);
+                       const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
+                       Observer observer, Vec3* gains = nullptr);
 
 }  // namespace bandlight

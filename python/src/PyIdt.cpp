@@ -45,9 +45,8 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                const py::object& testSet, const py::object& interpolate,
                const py::object& asShotNeutral, const std::optional<Path>& chartRgb,
                const py::object& chart, const py::object& light, int rootpoly,
-               const std::optional<Path>& json,
-               const std::optional<Path>& config, const std::optional<Path>& base,
-               const std::optional<Path>& out)
+               const std::optional<Path>& json, const std::optional<Path>& config,
+               const std::optional<Path>& base, const std::optional<Path>& out)
 {
     using namespace pybind11::literals;
     jobs::IdtRequest r;
@@ -92,11 +91,10 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
         }
     }
     const std::string written = !r.config.empty() ? r.config : r.out;
-    doc["config"] = written.empty()
-                        ? py::object(py::none())
-                        : py::module_::import("PyOpenColorIO")
-                              .attr("Config")
-                              .attr("CreateFromFile")(written + "/config.ocio");
+    doc["config"] = written.empty() ? py::object(py::none())
+                                    : py::module_::import("PyOpenColorIO")
+                                          .attr("Config")
+                                          .attr("CreateFromFile")(written + "/config.ocio");
     return std::move(doc);
 }
 
@@ -110,9 +108,9 @@ void AddIdt(py::module_& m)
           py::arg("training") = py::none(), py::arg("test_set") = defaults::IDT_TEST_SET,
           py::arg("interpolate") = py::none(), py::arg("as_shot_neutral") = py::none(),
           py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
-          py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY, py::arg("json") = py::none(),
-          py::arg("config") = py::none(), py::arg("base") = py::none(),
-          py::arg("out") = py::none(), R"doc(
+          py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY,
+          py::arg("json") = py::none(), py::arg("config") = py::none(),
+          py::arg("base") = py::none(), py::arg("out") = py::none(), R"doc(
 Camera input transforms (IDTs): the job of ``bandlight idt``, returning the
 document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
 "first_order_matrix" and "raw_to_working" as numpy arrays:

@@ -36,8 +36,7 @@ Mat3 SpaceMatrix(const OCIO::ConstConfigRcPtr& config, const std::string& src,
 }
 }  // namespace
 
-TEST_CASE("idt --config: each input space's processor is its IDT, gains folded in",
-          "[jobs][idt]")
+TEST_CASE("idt --config: each input space's processor is its IDT, gains folded in", "[jobs][idt]")
 {
     jobs::IdtRequest r;
     r.camera = kD21;
@@ -63,8 +62,7 @@ TEST_CASE("idt --config: each input space's processor is its IDT, gains folded i
         const Mat3 got = SpaceMatrix(config, e.colorSpace, "ACES2065-1");
         CHECK((got - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
         // White-balanced raw white → (1, 1, 1).
-        CHECK((expected * e.fit.gains.cwiseInverse() - Vec3::Ones()).cwiseAbs().maxCoeff() <
-              1e-12);
+        CHECK((expected * e.fit.gains.cwiseInverse() - Vec3::Ones()).cwiseAbs().maxCoeff() < 1e-12);
         // The CLF beside it, read back through OCIO's own reader.
         OCIO::FileTransformRcPtr f = OCIO::FileTransform::Create();
         f->setSrc((r.config + "/luts/" + SafeName(e.colorSpace) + ".clf").c_str());
@@ -121,8 +119,8 @@ TEST_CASE("idt --base: a studio config gains input spaces and keeps its own tran
     CHECK(ext->getNumColorSpaces() == b->getNumColorSpaces() + 1);
     CHECK(ext->getNumLooks() == b->getNumLooks());
     const jobs::IdtEntry& e = result.idts.front();
-    const Mat3 expected = SpaceToSpace(FindRgbSpace("aces2065-1"), FindRgbSpace("rec709")) *
-                          e.fit.rawToWorking();
+    const Mat3 expected =
+        SpaceToSpace(FindRgbSpace("aces2065-1"), FindRgbSpace("rec709")) * e.fit.rawToWorking();
     const Mat3 got = SpaceMatrix(ext, e.colorSpace, "Linear Rec.709 (sRGB)");
     CHECK((got - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
     // The same IDT added twice clashes.

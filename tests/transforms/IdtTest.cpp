@@ -136,9 +136,10 @@ TEST_CASE("Every IDT of a colorimetric camera is M^-1 CAT M diag(white) exactly"
             // M⁻¹·CAT02(W → W_ws)·diag(W) with M the space's RGB → XYZ.
             const SurfaceRenderer eye(light, working);
             const Vec3 w = eye.rgbToXyz() * eye.white();
-            const Mat3 exact = eye.rgbToXyz().inverse() *
-                               AdaptationMatrix(w, WorkingWhiteXyz(working), AdaptationMethod::CAT02) *
-                               w.asDiagonal();
+            const Mat3 exact =
+                eye.rgbToXyz().inverse() *
+                AdaptationMatrix(w, WorkingWhiteXyz(working), AdaptationMethod::CAT02) *
+                w.asDiagonal();
             INFO(ws);
             CHECK((fit.matrix - exact).cwiseAbs().maxCoeff() < 1e-9);
             CHECK((fit.firstOrder - exact).cwiseAbs().maxCoeff() < 1e-9);
@@ -154,11 +155,11 @@ TEST_CASE("The IDT reaches the optimum of rawtoaces' objective (ARRI D21)", "[tr
 {
     const SpectralCamera camera = D21();
     const RgbSpace& aces = FindRgbSpace("aces2065-1");
-    for (const auto& [name, light] :
-         std::vector<std::pair<std::string, Spectrum>>{{"ISO 7589 studio tungsten", StudioTungsten()},
-                                                       {"D55", BuiltinIlluminant("D55")},
-                                                       {"A", BuiltinIlluminant("A")},
-                                                       {"F11", BuiltinIlluminant("F11")}})
+    for (const auto& [name, light] : std::vector<std::pair<std::string, Spectrum>>{
+             {"ISO 7589 studio tungsten", StudioTungsten()},
+             {"D55", BuiltinIlluminant("D55")},
+             {"A", BuiltinIlluminant("A")},
+             {"F11", BuiltinIlluminant("F11")}})
     {
         INFO(name);
         const IdtProblem problem(camera, light, aces, AdaptationMethod::CAT02);
@@ -262,8 +263,8 @@ TEST_CASE("DNG interpolation in mired between 3200 K and 5600 K stays within 0.3
         }
     }
     std::cout << "D21, 3200K-5600K interpolation, 2800-6500 K: worst excess mean dE00 "
-              << worstExcess << " (clamped as DNG: " << worstClamped << "); between the pair, worst mean dE00 to the direct fit "
-              << worstInside << "\n";
+              << worstExcess << " (clamped as DNG: " << worstClamped
+              << "); between the pair, worst mean dE00 to the direct fit " << worstInside << "\n";
     CHECK(worstInside > 0.0);
     CHECK(worstClamped > worstExcess);
 }
@@ -280,8 +281,8 @@ TEST_CASE("An as-shot neutral gives the light's CCT within 1 % and Duv within 0.
         {
             const IdtProblem problem(camera, light, aces, AdaptationMethod::CAT02);
             const Vec3 neutral = problem.raw(Spectrum(300.0, 5.0, std::vector<double>(107, 1.0)));
-            const AsShotEstimate e = EstimateAsShot(camera, 3.7 * neutral, aces,
-                                                    AdaptationMethod::CAT02);
+            const AsShotEstimate e =
+                EstimateAsShot(camera, 3.7 * neutral, aces, AdaptationMethod::CAT02);
             const CctDuv truth = ComputeCct(problem.whiteXyz());
             INFO(camera.name() << " " << family << " " << truth.cctK);
             CHECK(std::abs(e.cct / truth.cctK - 1.0) < 0.01);
@@ -301,11 +302,11 @@ TEST_CASE("An as-shot neutral gives the light's CCT within 1 % and Duv within 0.
         std::cout << camera.name() << " as-shot: worst CCT error " << 100.0 * worstCct
                   << " %, worst Duv error " << worstDuv << "\n";
     }
-    const AsShotEstimate a = EstimateAsShot(
-        D21(),
-        IdtProblem(D21(), BuiltinIlluminant("A"), aces, AdaptationMethod::CAT02)
-            .raw(Spectrum(300.0, 5.0, std::vector<double>(107, 1.0))),
-        aces, AdaptationMethod::CAT02);
+    const AsShotEstimate a =
+        EstimateAsShot(D21(),
+                       IdtProblem(D21(), BuiltinIlluminant("A"), aces, AdaptationMethod::CAT02)
+                           .raw(Spectrum(300.0, 5.0, std::vector<double>(107, 1.0))),
+                       aces, AdaptationMethod::CAT02);
     CHECK(a.nearest == "A");
     CHECK(a.cct == Approx(2856.0).epsilon(0.01));
     CHECK_THROWS_WITH(EstimateAsShot(D21(), Vec3(1.0, 0.0, 1.0), aces, AdaptationMethod::CAT02),
@@ -335,7 +336,7 @@ TEST_CASE("A chart IDT from simulated RGB equals the sensitivity IDT", "[transfo
         CHECK((fromChart.matrix - fromSensitivities.matrix).cwiseAbs().maxCoeff() < 1e-6);
         CHECK((fromChart.gains - fromSensitivities.gains).cwiseAbs().maxCoeff() < 1e-9);
     }
-    CHECK_THROWS_WITH(FitChartIdt({Vec3::Ones()}, chart, BuiltinIlluminant("A"), aces,
-                                  AdaptationMethod::CAT02),
-                      Catch::Contains("one camera RGB per patch"));
+    CHECK_THROWS_WITH(
+        FitChartIdt({Vec3::Ones()}, chart, BuiltinIlluminant("A"), aces, AdaptationMethod::CAT02),
+        Catch::Contains("one camera RGB per patch"));
 }
