@@ -158,6 +158,9 @@ void AddIdtCommand(CLI::App& app)
     cmd->add_option("--base", r.base,
                     "Existing config to add the input colour spaces to (with --out)");
     cmd->add_option("--out", r.out, "With --base: the folder the extended config is written into");
+    cmd->add_option("--base-space", r.baseSpace,
+                    "With --base: the primaries of its scene_linear space (" + RgbSpaceChoices() +
+                        "), when the base does not tell them");
     cmd->callback([o, cmd] { RunIdt(*o, *cmd); });
 }
 

@@ -13,6 +13,7 @@
 #include "bandlight/jobs/ConfigJob.h"
 #include "bandlight/jobs/Inputs.h"
 #include "bandlight/jobs/OutputPaths.h"
+#include "bandlight/plugin/SceneLinearEvidence.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/ColourRendering.h"
 #include "bandlight/spectral/Exception.h"
@@ -198,6 +199,12 @@ void CheckOptions(const IdtRequest& r)
             "{out} is where an extended {base} config goes; for a new config "
             "give {config=}DIR");
     }
+    if (!r.baseSpace.empty() && r.base.empty())
+    {
+        throw ParameterError(
+            "{base_space} names the primaries of a {base} config's "
+            "scene_linear: give the base, or leave {base_space} out");
+    }
     if (!r.config.empty() && !r.base.empty())
     {
         throw ParameterError(
@@ -271,6 +278,29 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         plan.check();
     }
     const RgbSpace& working = FindRgbSpace(r.workingSpace);
+    // The base is read, and its scene_linear identified, before any fit.
+    OCIO_NAMESPACE::ConstConfigRcPtr base;
+    if (!r.base.empty())
+    {
+        base = ReadConfigFile(r.base, false);
+        if (r.baseSpace.empty())
+        {
+            try
+            {
+                IdentifySceneLinear(base);
+            }
+            catch (const ParameterError&)
+            {
+                throw ParameterError(
+                    "cannot tell the primaries of the scene_linear space of {base} " +
+                    ShowPath(r.base) + ": name them with {base_space} (" + RgbSpaceChoices() + ")");
+            }
+        }
+        else
+        {
+            FindRgbSpace(r.baseSpace);
+        }
+    }
     const AdaptationMethod adaptation = ParsePlates("balanced", r.adaptation).adaptation;
     const Observer observer = ParseObserver(r.observer);
 
@@ -471,7 +501,8 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         ConfigRequest c;
         c.out = r.config.empty() ? r.out : r.config;
         c.base = r.base;
-        c.workingSpace = r.base.empty() ? working.name : "";
+        c.baseConfig = base;
+        c.workingSpace = r.base.empty() ? working.name : r.baseSpace;
         c.observer = r.observer;
         c.looks = false;
         for (IdtEntry& e : result.idts)

@@ -52,6 +52,9 @@ struct IdtRequest
     /// Extend this config with the input spaces, written into `out`.
     std::string base;
     std::string out;
+    /// The primaries of the base's scene_linear space, when the base does
+    /// not tell them (empty: identified from the base, as `config --base`).
+    std::string baseSpace;
 };
 
 /// One light's IDT as reported.

@@ -46,7 +46,8 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                const py::object& asShotNeutral, const std::optional<Path>& chartRgb,
                const py::object& chart, const py::object& light, int rootpoly,
                const std::optional<Path>& json, const std::optional<Path>& config,
-               const std::optional<Path>& base, const std::optional<Path>& out)
+               const std::optional<Path>& base, const std::optional<Path>& out,
+               const std::optional<std::string>& baseSpace)
 {
     using namespace pybind11::literals;
     jobs::IdtRequest r;
@@ -76,6 +77,7 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
     r.config = OptionalPath(config);
     r.base = OptionalPath(base);
     r.out = OptionalPath(out);
+    r.baseSpace = baseSpace.value_or("");
     jobs::IdtResult result;
     {
         py::gil_scoped_release release;
@@ -110,7 +112,8 @@ void AddIdt(py::module_& m)
           py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
           py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY,
           py::arg("json") = py::none(), py::arg("config") = py::none(),
-          py::arg("base") = py::none(), py::arg("out") = py::none(), R"doc(
+          py::arg("base") = py::none(), py::arg("out") = py::none(),
+          py::arg("base_space") = py::none(), R"doc(
 Camera input transforms (IDTs): the job of ``bandlight idt``, returning the
 document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
 "first_order_matrix" and "raw_to_working" as numpy arrays:
@@ -137,7 +140,8 @@ comma-separated str or a sequence of built-in names, colour temperatures
 ("3200K": CIE daylight from 4000 K, Planckian below) and spectrum files.
 chart_rgb, chart, light: a photographed chart's camera RGB (CSV), its
 remittances and the light, instead of camera. json, config, base/out: the
-outputs, written together. Runs with the GIL released.
+outputs, written together; base_space: the primaries of the base's
+scene_linear when the base does not tell them. Runs with the GIL released.
 )doc");
 }
 

@@ -325,6 +325,7 @@ TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, no
         {"--camera '" + d21 + "' --lights D55 --chart TCS", "--chart-rgb"},
         {"--camera '" + d21 + "'", "--lights"},
         {"--lights D55", "--camera"},
+        {"--camera '" + d21 + "' --lights D55 --base-space rec709", "--base-space"},
         {"--camera '" + d21 + "' --lights 3200K,D55 --interpolate 3200k,5600K", "named twice"},
         {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --rootpoly 4", "--rootpoly"},
         {"--camera '" + d21 + "' --lights D55 --rootpoly 2", "--rootpoly"},

@@ -4,6 +4,7 @@
 // studio config extended with input spaces keeps its own, and the JSON
 // document carries the result.
 #include <filesystem>
+#include <fstream>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -128,4 +129,54 @@ TEST_CASE("idt --base: a studio config gains input spaces and keeps its own tran
     again.base = r.out + "/config.ocio";
     again.out = Fresh("again");
     CHECK_THROWS_WITH(jobs::MakeIdt(again), Contains("already has a colour space"));
+}
+
+TEST_CASE("idt --base: an OCIO v1 base stays v1, its IDT a CLF, when told its primaries",
+          "[jobs][idt]")
+{
+    // A v1 base whose scene_linear says nothing bandlight can identify.
+    const std::string dir = Fresh("v1base");
+    fs::create_directories(dir);
+    std::ofstream(dir + "/config.ocio") << R"(ocio_profile_version: 1
+search_path: ""
+strictparsing: true
+luma: [0.2126, 0.7152, 0.0722]
+roles:
+  default: lin
+  scene_linear: lin
+  reference: lin
+displays:
+  sRGB:
+    - !<View> {name: Raw, colorspace: lin}
+active_displays: []
+active_views: []
+colorspaces:
+  - !<ColorSpace>
+    name: lin
+    bitdepth: 32f
+    isdata: false
+    allocation: uniform
+  - !<ColorSpace>
+    name: log
+    bitdepth: 32f
+    isdata: false
+    allocation: uniform
+    to_reference: !<LogTransform> {base: 2, direction: inverse}
+)";
+    jobs::IdtRequest r;
+    r.camera = kD21;
+    r.lights = {"A"};
+    r.base = dir + "/config.ocio";
+    r.out = Fresh("v1out");
+    CHECK_THROWS_WITH(jobs::MakeIdt(r), Contains("name them with base_space"));
+    CHECK_FALSE(fs::exists(r.out));
+    r.baseSpace = "rec2020";
+    const jobs::IdtResult result = jobs::MakeIdt(r);
+    const OCIO::ConstConfigRcPtr ext = jobs::LoadConfig(r.out);
+    CHECK(ext->getMajorVersion() == 1);
+    const jobs::IdtEntry& e = result.idts.front();
+    const Mat3 expected =
+        SpaceToSpace(FindRgbSpace("aces2065-1"), FindRgbSpace("rec2020")) * e.fit.rawToWorking();
+    const Mat3 got = SpaceMatrix(ext, e.colorSpace, "lin");
+    CHECK((got - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
 }
