@@ -39,6 +39,7 @@ int main(int argc, char** argv)
     bandlight::cli::AddTablesCommand(app);
     bandlight::cli::AddXyzCommand(app);
     bandlight::cli::AddCriCommand(app);
+    bandlight::cli::AddIdtCommand(app);
     bandlight::cli::AddConfigCommand(app);
     bandlight::cli::AddLutCommand(app);
     bandlight::cli::AddApplyCommand(app);

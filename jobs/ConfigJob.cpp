@@ -48,7 +48,7 @@ void CheckOutputFolder(const ConfigRequest& r)
 }
 }  // namespace
 
-ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
+ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter, OutputSet* outputs)
 {
     CheckOutputFolder(r);
     if (r.basePaths == "absolute" && r.base.empty() && !r.baseConfig)
@@ -66,7 +66,11 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
         options.idtLight = idt.spectrum;
     }
     options.observer = ParseObserver(r.observer);
-    if (r.lights.empty())
+    if (!r.looks)
+    {
+        // Input spaces alone: no lights, no methods, no looks.
+    }
+    else if (r.lights.empty())
     {
         for (const std::string& name : SplitList(defaults::CONFIG_ILLUMINANTS))
         {
@@ -77,7 +81,10 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
     {
         options.lights = r.lights;
     }
-    options.methods = r.methods.empty() ? LinearMethodNames() : r.methods;
+    options.methods = !r.looks ? std::vector<std::string>{}
+                      : r.methods.empty() ? LinearMethodNames()
+                                          : r.methods;
+    options.inputSpaces = r.inputSpaces;
     options.workingSpace = r.workingSpace.empty() ? defaults::WORKING_SPACE : r.workingSpace;
     options.outputDir = r.out.value_or("");
     options.lutSize = CheckedLutSize(r.lutSize, "lut_size");
@@ -107,7 +114,7 @@ ConfigResult MakeConfig(const ConfigRequest& r, Reporter& reporter)
     }
     if (r.out)
     {
-        WriteConfigPackage(result.package, *r.out);
+        WriteConfigPackage(result.package, *r.out, outputs);
         // Its LUT-file looks resolve from the folder they were written to.
         result.package.config->setWorkingDir(r.out->c_str());
     }

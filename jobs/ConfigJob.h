@@ -34,6 +34,11 @@ struct ConfigRequest
     int lutSize = defaults::CONFIG_LUT_SIZE;
     std::string basePaths = defaults::BASE_PATHS;  ///< "relative" or "absolute"
     PlatesRequest plates;
+    /// false: no looks (lights and methods left empty), as for a config of
+    /// input colour spaces alone (`idt --config`).
+    bool looks = true;
+    /// Input colour spaces (camera IDTs) to add.
+    std::vector<InputSpace> inputSpaces;
 };
 
 struct ConfigResult
@@ -44,7 +49,9 @@ struct ConfigResult
 };
 
 /// Builds the config of `request` and, with `out`, writes it. The returned
-/// config's working folder is `out`, so its LUT-file looks resolve.
-ConfigResult MakeConfig(const ConfigRequest& request, Reporter& reporter = SilentReporter());
+/// config's working folder is `out`, so its LUT-file looks resolve. With
+/// `outputs`, the files join that set of outputs and the caller commits it.
+ConfigResult MakeConfig(const ConfigRequest& request, Reporter& reporter = SilentReporter(),
+                        OutputSet* outputs = nullptr);
 
 }  // namespace bandlight::jobs

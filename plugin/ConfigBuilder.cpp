@@ -204,8 +204,52 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
     }
 }
 
+/// The input colour spaces (camera IDTs), each to the config's reference:
+/// its matrix into its space, that space into the working space, then the
+/// working space to the reference (`workingToReference`, none when the
+/// working space is the reference). Each matrix is also a CLF file.
+void AddInputSpaces(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& working,
+                    const OCIO::ConstTransformRcPtr& workingToReference)
+{
+    OCIO::Config& config = *package.config;
+    for (const InputSpace& in : o.inputSpaces)
+    {
+        if (config.getColorSpace(in.name.c_str()))
+        {
+            throw Exception("the config already has a colour space named '" + in.name + "'");
+        }
+        OCIO::ColorSpaceRcPtr cs = SceneSpace(in.name, "Input", in.description, "scene-linear");
+        const Mat3 m = SpaceToSpace(FindRgbSpace(in.space), working) * in.toSpace;
+        OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
+        const OCIO::GroupTransformRcPtr matrix = GuardedMatrixTransform(m);
+        if (IsV1(config))
+        {
+            g->appendTransform(AsLutFile(package, in.name, matrix));
+        }
+        else
+        {
+            g->appendTransform(matrix);
+            OCIO::GroupTransformRcPtr file = GuardedMatrixTransform(in.toSpace);
+            file->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
+                                                      in.description.c_str());
+            package.lutFiles.emplace_back(
+                std::string(kLutFolder) + "/" + SafeName(in.name) + ".clf", file);
+        }
+        if (workingToReference)
+        {
+            g->appendTransform(workingToReference->createEditableCopy());
+        }
+        cs->setTransform(g, OCIO::COLORSPACE_DIR_TO_REFERENCE);
+        config.addColorSpace(cs);
+    }
+}
+
 void RequireLights(const ConfigOptions& o)
 {
+    if (o.lights.empty() && o.methods.empty() && !o.inputSpaces.empty())
+    {
+        return;  // input spaces alone: no looks
+    }
     if (o.lights.size() < 2)
     {
         throw Exception("a config needs at least two illuminants to change between");
@@ -377,6 +421,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
     config->setActiveViews("Standard, Raw");
 
     AddLooks(package, o, working, workingName);
+    AddInputSpaces(package, o, working, nullptr);
     if (!package.lutFiles.empty())
     {
         config->addSearchPath(kLutFolder);
@@ -692,6 +737,7 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
         AddBandSpace(package, working, o.observer, SceneLinearToReference(sceneLinear));
     }
     AddLooks(package, o, working, processSpace);
+    AddInputSpaces(package, o, working, SceneLinearToReference(sceneLinear));
     if (!package.lutFiles.empty())
     {
         config->addSearchPath(kLutFolder);

@@ -21,6 +21,19 @@ inline constexpr const char* ADAPTATION = "cat02";
 /// The light a camera's one fixed IDT was fitted for (rootpoly-camera).
 inline constexpr const char* IDT_LIGHT = "D55";
 
+/// The working space camera input transforms land in: ACES2065-1, as IDTs do.
+inline constexpr const char* IDT_WORKING_SPACE = "aces2065-1";
+/// The second set an IDT's error is measured on (beside its training set,
+/// rawtoaces' 190): the CIE 13.3 test colour samples, fitted on by no IDT.
+inline constexpr const char* IDT_TEST_SET = "TCS";
+/// The degree of the root polynomial a chart IDT also fits: 0, none (2 or 3).
+inline constexpr int IDT_CHART_ROOTPOLY = 0;
+/// The colour temperatures `idt --interpolate` measures the interpolated
+/// IDT at: 2800–6500 K every 100 K (tungsten to daylight).
+inline constexpr double IDT_SWEEP_MIN_K = 2800.0;
+inline constexpr double IDT_SWEEP_MAX_K = 6500.0;
+inline constexpr double IDT_SWEEP_STEP_K = 100.0;
+
 /// The linear working space of images, configs and LUTs.
 inline constexpr const char* WORKING_SPACE = "acescg";
 /// The illuminant-change method of `apply`, `lut` and Python's relighters.

@@ -11,10 +11,6 @@
 namespace bandlight
 {
 
-namespace
-{
-
-/// d(L*a*b*)/d(XYZ) at `xyz` relative to `white` (CIE 15:2004 §8.2.1).
 Mat3 LabJacobian(const Vec3& xyz, const Vec3& white)
 {
     constexpr double kDelta = 6.0 / 29.0;
@@ -34,6 +30,9 @@ Mat3 LabJacobian(const Vec3& xyz, const Vec3& white)
     // clang-format on
     return j;
 }
+
+namespace
+{
 
 Eigen::MatrixXd Fit(const ColourFit& data, int degree, double ridge)
 {

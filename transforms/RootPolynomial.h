@@ -48,6 +48,10 @@ private:
     float m_f[3][13] = {};  ///< the matrix as floats, for the fast path
 };
 
+/// d(L*a*b*)/d(XYZ) at `xyz` relative to `white` (CIE 15:2004 §8.2.1): the
+/// first-order weights of the fits below and the Jacobian of the exact one.
+Mat3 LabJacobian(const Vec3& xyz, const Vec3& white);
+
 /// What a fit is given: colours in and the colours they should become
 /// (linear RGB), the white that must map exactly (whiteIn → whiteOut), and
 /// how to see the targets in CIELAB (their RGB → XYZ and the reference

@@ -320,6 +320,15 @@ def accuracy(illuminants: Union[str, Sequence[LightLike], None] = None,
              camera: Optional[StrPath] = None, camera_idt: str = "D55",
              json: Optional[StrPath] = None,
              plot: Optional[StrPath] = None) -> AccuracyDocument: ...
+def idt(camera: Optional[StrPath] = None, lights: Union[str, Sequence[StrPath], None] = None, *,
+        working_space: str = "aces2065-1", adaptation: str = "cat02",
+        observer: ObserverLike = "1931", training: Optional[StrPath] = None,
+        test_set: StrPath = "TCS", interpolate: Union[str, Sequence[StrPath], None] = None,
+        as_shot_neutral: Optional[Sequence[float]] = None, chart_rgb: Optional[StrPath] = None,
+        chart: Optional[StrPath] = None, light: Optional[StrPath] = None, rootpoly: int = 0,
+        json: Optional[StrPath] = None, config: Optional[StrPath] = None,
+        base: Optional[StrPath] = None, out: Optional[StrPath] = None,
+        base_space: Optional[str] = None) -> Dict[str, Any]: ...
 def frame_set(text: str) -> List[int]: ...
 def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None, client: Any = None,
           **options: Any) -> ApplyResult: ...

@@ -272,6 +272,7 @@ PYBIND11_MODULE(_bandlight, m)
     AddTransforms(m);
     AddConfig(m);
     AddAccuracy(m);
+    AddIdt(m);
     AddRender(m);
     AddApply(m);
     AddSpectralImage(m);

@@ -49,6 +49,7 @@ void AddBands(py::module_& m);
 void AddTransforms(py::module_& m);
 void AddConfig(py::module_& m);
 void AddAccuracy(py::module_& m);
+void AddIdt(py::module_& m);
 void AddRender(py::module_& m);
 void AddApply(py::module_& m);
 void AddSpectralImage(py::module_& m);

@@ -461,4 +461,82 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
     CHECK(ok.code == 0);
     CHECK_THAT(ok.err, Contains("2 light groups (fill, key), Arnold naming, beauty R, G, B"));
     CHECK(fs::is_regular_file(out));
+
+TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, nothing written",
+          "[cli][mistakes][idt]")
+{
+    const std::string dir = Folder("idt");
+    const std::string d21 = std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/arri_d21_380_780_5.json";
+    const std::string out = " --json '" + dir + "/idt.json' --config '" + dir + "/cfg'";
+    // A camera whose blue channel is dead.
+    {
+        std::ofstream f(dir + "/dead.csv");
+        f << "nm,R,G,B\n";
+        for (int l = 380; l <= 780; l += 5)
+        {
+            f << l << "," << std::exp(-0.5 * std::pow((l - 600) / 30.0, 2)) << ","
+              << std::exp(-0.5 * std::pow((l - 540) / 30.0, 2)) << ",0\n";
+        }
+    }
+    // A camera whose blue sees only 400–450 nm, and a light with no power there.
+    {
+        std::ofstream cam(dir + "/narrow.csv"), light(dir + "/orange.csv");
+        cam << "nm,R,G,B\n";
+        light << "nm,orange\n";
+        for (int l = 380; l <= 780; l += 5)
+        {
+            cam << l << "," << std::exp(-0.5 * std::pow((l - 600) / 30.0, 2)) << ","
+                << std::exp(-0.5 * std::pow((l - 540) / 30.0, 2)) << ","
+                << (l >= 400 && l <= 450 ? 1.0 : 0.0) << "\n";
+            light << l << "," << (l >= 500 ? 1.0 : 0.0) << "\n";
+        }
+    }
+    // Chart RGB: too few patches for TCS (15), and a NaN.
+    {
+        std::ofstream few(dir + "/few.csv"), nan(dir + "/nan.csv");
+        few << "name,R,G,B\n";
+        nan << "name,R,G,B\n";
+        for (int i = 1; i <= 15; ++i)
+        {
+            if (i <= 5)
+            {
+                few << "TCS" << i << ",0.2,0.3,0.4\n";
+            }
+            nan << "TCS" << i << "," << (i == 7 ? "nan" : "0.2") << ",0.3,0.4\n";
+        }
+    }
+    const std::pair<std::string, std::string> mistakes[] = {
+        {"--camera '" + dir + "/dead.csv' --lights D55", "no response"},
+        {"--camera '" + dir + "/narrow.csv' --lights '" + dir + "/orange.csv'",
+         "blue channel records nothing"},
+        {"--chart-rgb '" + dir + "/few.csv' --chart TCS --light D55", "5 patches"},
+        {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55", "nan.csv:8"},
+        {"--camera '" + d21 + "' --lights 32OOK", "'32OOK' is not a colour temperature"},
+        {"--camera '" + d21 + "' --as-shot-neutral 0.5,0,0.8", "--as-shot-neutral"},
+        {"--camera '" + d21 + "' --interpolate 3200K", "--interpolate takes two lights"},
+        {"--camera '" + d21 + "' --lights D55 --base '" + dir + "/x.ocio'", "--out"},
+        {"--camera '" + d21 + "' --lights D55 --chart TCS", "--chart-rgb"},
+        {"--camera '" + d21 + "'", "--lights"},
+        {"--lights D55", "--camera"},
+        {"--camera '" + d21 + "' --lights D55 --base-space rec709", "--base-space"},
+        {"--camera '" + d21 + "' --lights 3200K,D55 --interpolate 3200k,5600K", "named twice"},
+        {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --rootpoly 4", "--rootpoly"},
+        {"--camera '" + d21 + "' --lights D55 --rootpoly 2", "--rootpoly"},
+        {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --test-set TCS",
+         "--test-set"},
+    };
+    for (const auto& [args, mentions] : mistakes)
+    {
+        INFO(args);
+        const Result r = Bandlight("idt " + args + out);
+        CheckOneLine(r, mentions);
+        CHECK(r.out.empty());
+    }
+    // The base with an --out but a --config too.
+    CheckOneLine(Bandlight("idt --camera '" + d21 + "' --lights D55 --base '" + dir +
+                           "/x.ocio' --out '" + dir + "/o'" + out),
+                 "give one of them");
+    CHECK(!fs::exists(dir + "/idt.json"));
+    CHECK(!fs::exists(dir + "/cfg"));
+    CHECK(!fs::exists(dir + "/o"));
 }

@@ -31,7 +31,8 @@ Inputs, written deterministically into every scratch folder: plate.exr and
 plate.1001.exr ... plate.1003.exr (64x32 float RGBA, uncompressed EXR written by
 this script), surfaces.csv (six of rawtoaces' 190 training remittances from
 data/ref/rawtoaces_190.csv), camera.csv (the CIE 1931 observer from data/cmf as
-a camera's R, G, B sensitivities) and scenes/ (the bundled scenes).
+a camera's R, G, B sensitivities), arri_d21.json (rawtoaces' ARRI D21
+sensitivities, tests/data/rawtoaces) and scenes/ (the bundled scenes).
 
 The manifest (DIR/manifest.json) holds for each command, keyed by its text (a
 command that occurs again gets " #2", " #3"), its exit code, the sha256 of its
@@ -244,6 +245,8 @@ def make_inputs(root, folder):
     (folder / "camera.csv").write_text(
         "# The CIE 1931 observer as a camera (data/cmf/cie1931_2deg_xyz.csv)\nwavelength,R,G,B\n" +
         "".join(r + "\n" for r in rows[1:]))
+    shutil.copyfile(root / "tests" / "data" / "rawtoaces" / "arri_d21_380_780_5.json",
+                    folder / "arri_d21.json")
     shutil.copytree(root / "scenes", folder / "scenes")
 
 

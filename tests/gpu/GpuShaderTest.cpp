@@ -15,6 +15,7 @@
 #include "robustness/HardValues.h"
 #include "bandlight/spectral/CameraFile.h"
 #include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/Idt.h"
 
 using namespace bandlight;
 using namespace bandlight::test;
@@ -215,4 +216,23 @@ TEST_CASE("The checks catch the literal OCIO 2.1 writes for a 1e30 clamp", "[gpu
                               Catch::Matchers::Contains("does not compile on the GPU"));
         }
     }
+}
+
+TEST_CASE("Camera input colour spaces (idt --config) compile and run on the GPU", "[gpu][idt]")
+{
+    // rawtoaces' ARRI D21 (tests/data/rawtoaces), IDTs for A and D55.
+    const SpectralCamera camera(
+        ReadCameraFile(BANDLIGHT_TEST_DATA_ROOT "/rawtoaces/arri_d21_380_780_5.json"));
+    ConfigOptions options;
+    options.workingSpace = "aces2065-1";
+    for (const char* light : {"A", "D55"})
+    {
+        const IdtFit fit = FitIdtOptimal(IdtProblem(camera, BuiltinIlluminant(light),
+                                                    FindRgbSpace("aces2065-1"),
+                                                    AdaptationMethod::CAT02));
+        options.inputSpaces.push_back({std::string("Input - arri d21 - ") + light, "IDT",
+                                       fit.rawToWorking(), "aces2065-1"});
+    }
+    // Matrices only: no LUT among the config's transforms.
+    CHECK(CheckConfigOnGpu(options, "idt") == 0);
 }

@@ -18,7 +18,9 @@ from test_stubs import STUB, split_params, stub_definitions, stub_tree
 
 # The table's entries each keyword may take, by keyword name.
 KEYWORD_ENTRIES = {
-    "working_space": {"WORKING_SPACE"},
+    "working_space": {"WORKING_SPACE", "IDT_WORKING_SPACE"},
+    "test_set": {"IDT_TEST_SET"},
+    "rootpoly": {"IDT_CHART_ROOTPOLY"},
     "space": {"WORKING_SPACE"},
     "method": {"METHOD", "WHITE_ADAPTATION"},
     "observer": {"OBSERVER"},

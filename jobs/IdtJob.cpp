@@ -1,0 +1,680 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "bandlight/jobs/IdtJob.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bandlight/jobs/ConfigJob.h"
+#include "bandlight/jobs/Inputs.h"
+#include "bandlight/jobs/OutputPaths.h"
+#include "bandlight/plugin/SceneLinearEvidence.h"
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/ColourRendering.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/TextFile.h"
+#include "bandlight/transforms/Accuracy.h"
+#include "bandlight/transforms/Plates.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+
+/// A chart IDT has six free parameters and three residuals a patch; fewer
+/// than eight patches leave it barely determined (and no test of its fit).
+constexpr size_t kFewestChartPatches = 8;
+
+bool Exists(const std::string& path)
+{
+    std::ifstream f(path);
+    return bool(f);
+}
+
+/// A light of an IDT: a colour temperature ("3200K": daylight from 4000 K,
+/// Planckian below), a built-in name or a spectrum file.
+Light ResolveIdtLight(const std::string& text, Reporter& reporter)
+{
+    double kelvin = 0.0;
+    if (!Exists(text) && ParseCct(text, kelvin))
+    {
+        std::ostringstream name;
+        name << kelvin << "K";
+        return {name.str(), IdtLightForCct(kelvin)};
+    }
+    return ResolveIlluminant(text, reporter);
+}
+
+/// The chart's camera RGB: one row per patch, "[name,] R, G, B", an
+/// optional header row and '#' comments.
+std::vector<Vec3> ReadChartRgb(const std::string& path)
+{
+    std::string text = ReadTextFile(path, "chart RGB file");
+    CheckUtf8Text(text, path);
+    std::istringstream in(text);
+    std::vector<Vec3> rgb;
+    std::string line;
+    size_t lineNo = 0;
+    bool header = false;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        if (!line.empty() && line.back() == '\r')
+        {
+            line.pop_back();
+        }
+        const size_t first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line[first] == '#')
+        {
+            continue;
+        }
+        std::vector<std::string> fields;
+        std::stringstream row(line);
+        for (std::string f; std::getline(row, f, ',');)
+        {
+            const size_t a = f.find_first_not_of(" \t"), b = f.find_last_not_of(" \t");
+            fields.push_back(a == std::string::npos ? "" : f.substr(a, b - a + 1));
+        }
+        if (fields.size() < 3 || fields.size() > 4)
+        {
+            throw Exception(SourcePosition(path, lineNo) +
+                            ": a chart RGB row is [name,] R, G, B, not " +
+                            std::to_string(fields.size()) + " fields");
+        }
+        Vec3 v;
+        bool numbers = true;
+        for (int c = 0; c < 3; ++c)
+        {
+            const std::string& f = fields[fields.size() - 3 + c];
+            char* end = nullptr;
+            errno = 0;
+            v[c] = std::strtod(f.c_str(), &end);
+            numbers = numbers && !f.empty() && end && *end == '\0';
+        }
+        if (!numbers && !header && rgb.empty())
+        {
+            header = true;  // R, G, B column names
+            continue;
+        }
+        if (!numbers || !v.allFinite())
+        {
+            throw Exception(SourcePosition(path, lineNo) +
+                            ": a patch's camera RGB must be three finite numbers, not '" +
+                            OneLine(line, 80) + "'");
+        }
+        rgb.push_back(v);
+    }
+    return rgb;
+}
+
+/// Items of a "R,G,B" list given as numbers.
+Vec3 CheckedNeutral(const std::vector<double>& n)
+{
+    if (n.size() != 3)
+    {
+        throw ParameterError("{as_shot_neutral} is three numbers R,G,B, not " +
+                             std::to_string(n.size()));
+    }
+    for (const double v : n)
+    {
+        if (!(v > 0.0) || !std::isfinite(v))
+        {
+            throw ParameterError(
+                "{as_shot_neutral} has a channel that is zero, negative or not "
+                "finite: a neutral has three positive channels");
+        }
+    }
+    return {n[0], n[1], n[2]};
+}
+
+/// Options that do not go together, refused before anything is read.
+void CheckOptions(const IdtRequest& r)
+{
+    const bool chart = !r.chartRgb.empty() || !r.chart.empty() || !r.chartLight.empty();
+    if (chart)
+    {
+        if (r.chartRgb.empty() || r.chart.empty() || r.chartLight.empty())
+        {
+            throw ParameterError("a chart IDT needs {chart_rgb}, {chart} and {light} together");
+        }
+        if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 && r.chartRootPolynomial != 3)
+        {
+            throw ParameterError(
+                "{rootpoly} is the degree of the chart's root polynomial: 2 "
+                "or 3, not " +
+                std::to_string(r.chartRootPolynomial));
+        }
+        if (!r.camera.empty() || !r.lights.empty() || !r.interpolate.empty() ||
+            !r.asShotNeutral.empty() || !r.training.empty())
+        {
+            throw ParameterError(
+                "a chart IDT is fitted on the chart under its {light}: "
+                "{camera}, {lights}, {training}, {interpolate} and "
+                "{as_shot_neutral} are for sensitivities");
+        }
+    }
+    else
+    {
+        if (r.camera.empty())
+        {
+            throw ParameterError(
+                "give the camera's sensitivities as {camera=}FILE (or a chart "
+                "with {chart_rgb}, {chart} and {light})");
+        }
+        if (r.lights.empty() && r.interpolate.empty() && r.asShotNeutral.empty())
+        {
+            throw ParameterError(
+                "name the lights to fit IDTs for ({lights}), two to "
+                "{interpolate} between, or an {as_shot_neutral}");
+        }
+    }
+    if (!chart && r.chartRootPolynomial != 0)
+    {
+        throw ParameterError(
+            "{rootpoly} is fitted on a chart: give {chart_rgb}, {chart} and "
+            "{light}");
+    }
+    if (!r.interpolate.empty() && r.interpolate.size() != 2)
+    {
+        throw ParameterError("{interpolate} takes two lights, not " +
+                             std::to_string(r.interpolate.size()));
+    }
+    if (!r.asShotNeutral.empty())
+    {
+        CheckedNeutral(r.asShotNeutral);
+    }
+    if (!r.base.empty() && r.out.empty())
+    {
+        throw ParameterError("{base} is extended into a folder of its own: give {out=}DIR");
+    }
+    if (!r.out.empty() && r.base.empty())
+    {
+        throw ParameterError(
+            "{out} is where an extended {base} config goes; for a new config "
+            "give {config=}DIR");
+    }
+    if (!r.baseSpace.empty() && r.base.empty())
+    {
+        throw ParameterError(
+            "{base_space} names the primaries of a {base} config's "
+            "scene_linear: give the base, or leave {base_space} out");
+    }
+    if (!r.config.empty() && !r.base.empty())
+    {
+        throw ParameterError(
+            "{config} writes a new config, {base} with {out} extends one: "
+            "give one of them");
+    }
+}
+
+nlohmann::ordered_json MatrixJson(const Mat3& m)
+{
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (int r = 0; r < 3; ++r)
+    {
+        a.push_back({m(r, 0), m(r, 1), m(r, 2)});
+    }
+    return a;
+}
+
+std::string Row(const Mat3& m, int r)
+{
+    return Fixed(m(r, 0), 6) + " " + Fixed(m(r, 1), 6) + " " + Fixed(m(r, 2), 6);
+}
+
+std::string Describe(const IdtEntry& e, const std::string& camera, const IdtResult& r)
+{
+    std::ostringstream d;
+    d << "Camera " << camera << " under " << e.light << " (CCT " << Fixed(e.cct, 0) << " K, Duv "
+      << Fixed(e.duv, 4) << "): raw camera RGB to " << FindRgbSpace(r.workingSpace).displayName
+      << ", white-balance gains R " << Fixed(e.fit.gains.x(), 4) << ", G 1, B "
+      << Fixed(e.fit.gains.z(), 4) << " folded in, then the 3x3 fitted as rawtoaces fits it (white "
+      << "kept, CIELAB error of " << r.trainingName << " minimised, "
+      << AdaptationName(ParsePlates("balanced", r.adaptation).adaptation)
+      << " to the working white). Training error " << Fixed(e.errors.front().mean, 2)
+      << " dE00 mean, " << Fixed(e.errors.front().max, 2) << " max; " << r.testName << " "
+      << Fixed(e.errors.back().mean, 2) << " mean. Generated by `bandlight idt`.";
+    return d.str();
+}
+
+}  // namespace
+
+std::string IdtColorSpaceName(const std::string& camera, const std::string& light)
+{
+    return "Input - " + camera + " - " + light;
+}
+
+IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
+{
+    CheckOptions(r);
+    // Outputs before any work.
+    {
+        OutputPlan plan;
+        if (!r.json.empty())
+        {
+            plan.file("{json}", r.json);
+        }
+        if (!r.config.empty())
+        {
+            plan.folder("{config}", r.config, {"config.ocio"});
+        }
+        if (!r.out.empty())
+        {
+            plan.folder("{out}", r.out, {"config.ocio"});
+        }
+        for (const std::string* in : {&r.camera, &r.training, &r.chartRgb, &r.base})
+        {
+            if (!in->empty())
+            {
+                plan.input(*in);
+            }
+        }
+        plan.check();
+    }
+    const RgbSpace& working = FindRgbSpace(r.workingSpace);
+    // The base is read, and its scene_linear identified, before any fit.
+    OCIO_NAMESPACE::ConstConfigRcPtr base;
+    if (!r.base.empty())
+    {
+        base = ReadConfigFile(r.base, false);
+        if (r.baseSpace.empty())
+        {
+            try
+            {
+                IdentifySceneLinear(base);
+            }
+            catch (const ParameterError&)
+            {
+                throw ParameterError(
+                    "cannot tell the primaries of the scene_linear space of {base} " +
+                    ShowPath(r.base) + ": name them with {base_space} (" + RgbSpaceChoices() + ")");
+            }
+        }
+        else
+        {
+            FindRgbSpace(r.baseSpace);
+        }
+    }
+    const AdaptationMethod adaptation = ParsePlates("balanced", r.adaptation).adaptation;
+    const Observer observer = ParseObserver(r.observer);
+
+    IdtResult result;
+    result.workingSpace = working.name;
+    result.adaptation = AdaptationName(adaptation);
+    const std::vector<NamedSpectrum> training =
+        r.training.empty() ? Rawtoaces190() : ResolveReflectances(r.training, reporter);
+    result.trainingName = r.training.empty() ? "rawtoaces 190" : r.training;
+    const std::vector<NamedSpectrum> test = ResolveReflectances(r.testSet, reporter);
+    result.testName = r.testSet;
+    result.trainingCount = int(training.size());
+    result.testCount = int(test.size());
+
+    // Every light and the camera's view of it, before any fit: a dead
+    // channel or a light a channel does not see is refused here.
+    struct Planned
+    {
+        Light light;
+        std::unique_ptr<IdtProblem> problem;
+    };
+    std::vector<Planned> planned;
+    std::unique_ptr<SpectralCamera> camera;
+    std::vector<Vec3> chartRgb;
+    std::vector<NamedSpectrum> chart;
+    Light chartLight;
+    if (!r.chartRgb.empty())
+    {
+        chart = ResolveReflectances(r.chart, reporter);
+        chartRgb = ReadChartRgb(r.chartRgb);
+        chartLight = ResolveIdtLight(r.chartLight, reporter);
+        if (chartRgb.size() != chart.size() || chartRgb.size() < kFewestChartPatches)
+        {
+            throw Exception(r.chartRgb + ": " + std::to_string(chartRgb.size()) +
+                            " patches of camera RGB for a chart of " +
+                            std::to_string(chart.size()) + " (" + r.chart +
+                            "): give one row per patch, in the chart's order, at least " +
+                            std::to_string(kFewestChartPatches));
+        }
+        result.camera = "chart";
+        result.chart = true;
+    }
+    else
+    {
+        camera = std::make_unique<SpectralCamera>(ReadCameraFile(r.camera));
+        result.camera = camera->name();
+        const auto plan = [&](const std::string& text)
+        {
+            Planned p{ResolveIdtLight(text, reporter), nullptr};
+            try
+            {
+                p.problem = std::make_unique<IdtProblem>(*camera, p.light.spectrum, working,
+                                                         adaptation, observer);
+            }
+            catch (const FileError&)
+            {
+                throw;
+            }
+            catch (const Exception& e)
+            {
+                throw Exception(std::string(e.what()) + " (" + p.light.name + ")");
+            }
+            planned.push_back(std::move(p));
+        };
+        for (const std::string& l : r.lights)
+        {
+            plan(l);
+        }
+        if (!r.interpolate.empty())
+        {
+            result.interpolateFrom = int(planned.size());
+            plan(r.interpolate[0]);
+            result.interpolateTo = int(planned.size());
+            plan(r.interpolate[1]);
+        }
+        // One colour space per light: two lights of one name would clash.
+        for (size_t i = 0; i < planned.size(); ++i)
+        {
+            for (size_t k = 0; k < i; ++k)
+            {
+                if (planned[i].light.name == planned[k].light.name)
+                {
+                    throw ParameterError("the light '" + planned[i].light.name +
+                                         "' is named twice ({lights}, {interpolate}): give "
+                                         "each once");
+                }
+            }
+        }
+    }
+
+    // The fits.
+    const auto entryFor = [&](const std::string& name, const IdtProblem& problem)
+    {
+        IdtEntry e;
+        e.light = name;
+        const CctDuv cd = ComputeCct(problem.whiteXyz());
+        e.cct = cd.cctK;
+        e.duv = cd.duv;
+        e.fit = FitIdtOptimal(problem, training, camera->label());
+        e.errors.push_back(problem.errors(e.fit.matrix, training, result.trainingName));
+        e.errors.push_back(problem.errors(e.fit.matrix, test, result.testName));
+        return e;
+    };
+    for (size_t i = 0; i < planned.size(); ++i)
+    {
+        result.idts.push_back(entryFor(planned[i].light.name, *planned[i].problem));
+    }
+    if (result.chart)
+    {
+        IdtEntry e;
+        e.light = chartLight.name;
+        const SurfaceRenderer eye(chartLight.spectrum, working, observer);
+        const CctDuv cd = ComputeCct(eye.rgbToXyz() * eye.white());
+        e.cct = cd.cctK;
+        e.duv = cd.duv;
+        e.fit = FitChartIdt(chartRgb, chart, chartLight.spectrum, working, adaptation, observer);
+        result.chartNeutral = chart[FlattestRemittance(chart)].name;
+        // The chart is its own training set: its error is the fit's.
+        const ColourFit d =
+            ChartFitData(chartRgb, chart, chartLight.spectrum, working, adaptation, observer);
+        const auto chartError = [&](const std::function<Vec3(const Vec3&)>& apply)
+        {
+            IdtError err;
+            err.set = r.chart;
+            err.count = int(chart.size());
+            std::vector<double> de;
+            for (size_t i = 0; i < d.input.size(); ++i)
+            {
+                de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * apply(d.input[i]), d.labWhite),
+                                        XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
+                err.mean += de.back() / double(d.input.size());
+                err.max = std::max(err.max, de.back());
+            }
+            err.p95 = Percentile(de, 0.95);
+            return err;
+        };
+        e.errors.push_back(chartError([&](const Vec3& c) { return Vec3(e.fit.matrix * c); }));
+        if (r.chartRootPolynomial != 0)
+        {
+            result.chartRootPolynomial = FitRootPolynomial(d, r.chartRootPolynomial);
+            result.chartRootPolynomialError =
+                chartError([&](const Vec3& c) { return result.chartRootPolynomial.apply(c); });
+            result.hasChartRootPolynomial = true;
+        }
+        result.trainingName = r.chart;
+        result.trainingCount = int(chart.size());
+        result.testName.clear();
+        result.testCount = 0;
+        result.idts.push_back(e);
+    }
+    if (!r.asShotNeutral.empty())
+    {
+        result.asShotNeutral = r.asShotNeutral;
+        result.asShot =
+            EstimateAsShot(*camera, CheckedNeutral(r.asShotNeutral), working, adaptation, observer);
+        result.hasAsShot = true;
+        std::ostringstream name;
+        name << "as shot (" << result.asShot.family << " "
+             << std::lround(result.asShot.familyKelvin) << "K)";
+        const IdtProblem problem(*camera, result.asShot.light, working, adaptation, observer);
+        result.idts.push_back(entryFor(name.str(), problem));
+    }
+    if (result.interpolateFrom >= 0)
+    {
+        const IdtEntry& a = result.idts[size_t(result.interpolateFrom)];
+        const IdtEntry& b = result.idts[size_t(result.interpolateTo)];
+        for (double k = defaults::IDT_SWEEP_MIN_K; k <= defaults::IDT_SWEEP_MAX_K + 1e-9;
+             k += defaults::IDT_SWEEP_STEP_K)
+        {
+            const IdtProblem problem(*camera, IdtLightForCct(k), working, adaptation, observer);
+            const IdtFit direct = FitIdtOptimal(problem, training, camera->label());
+            const Mat3 m = InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k, true);
+            const ColourFit d = problem.data(test);
+            IdtInterpolationPoint p;
+            p.cct = k;
+            for (const Vec3& c : d.input)
+            {
+                const double de =
+                    DeltaE2000(XyzToLab(d.rgbToXyz * (m * c), d.labWhite),
+                               XyzToLab(d.rgbToXyz * (direct.matrix * c), d.labWhite));
+                p.meanVsDirect += de / double(d.input.size());
+                p.maxVsDirect = std::max(p.maxVsDirect, de);
+            }
+            p.interpolatedMean = problem.errors(m, test, r.testSet).mean;
+            p.directMean = problem.errors(direct.matrix, test, r.testSet).mean;
+            p.clampedMean = problem
+                                .errors(InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k),
+                                        test, r.testSet)
+                                .mean;
+            result.interpolation.push_back(p);
+        }
+    }
+
+    // The outputs, committed together.
+    OutputSet outputs;
+    if (!r.config.empty() || !r.out.empty())
+    {
+        ConfigRequest c;
+        c.out = r.config.empty() ? r.out : r.config;
+        c.base = r.base;
+        c.baseConfig = base;
+        c.workingSpace = r.base.empty() ? working.name : r.baseSpace;
+        c.observer = r.observer;
+        c.looks = false;
+        for (IdtEntry& e : result.idts)
+        {
+            e.colorSpace = IdtColorSpaceName(result.camera, e.light);
+            c.inputSpaces.push_back({e.colorSpace, Describe(e, result.camera, result),
+                                     e.fit.rawToWorking(), working.name});
+        }
+        MakeConfig(c, reporter, &outputs);
+        result.written.push_back(*c.out + "/config.ocio");
+    }
+    if (!r.json.empty())
+    {
+        const std::string document = IdtDocument(result);
+        outputs.write(r.json, [&](std::ostream& os) { os << document << "\n"; });
+        result.written.push_back(r.json);
+    }
+    outputs.commit();
+    return result;
+}
+
+std::string IdtDocument(const IdtResult& r)
+{
+    nlohmann::ordered_json j;
+    j["camera"] = r.camera;
+    j["working_space"] = r.workingSpace;
+    j["adaptation"] = r.adaptation;
+    j["training"] = {{"name", r.trainingName}, {"count", r.trainingCount}};
+    if (!r.testName.empty())
+    {
+        j["test_set"] = {{"name", r.testName}, {"count", r.testCount}};
+    }
+    j["idts"] = nlohmann::ordered_json::array();
+    for (const IdtEntry& e : r.idts)
+    {
+        nlohmann::ordered_json i;
+        i["light"] = e.light;
+        i["cct"] = e.cct;
+        i["duv"] = e.duv;
+        i["gains"] = {e.fit.gains.x(), e.fit.gains.y(), e.fit.gains.z()};
+        i["matrix"] = MatrixJson(e.fit.matrix);
+        i["first_order_matrix"] = MatrixJson(e.fit.firstOrder);
+        i["raw_to_working"] = MatrixJson(e.fit.rawToWorking());
+        i["objective_rms_de76"] = {{"optimum", e.fit.rmsDe76},
+                                   {"first_order", e.fit.firstOrderRmsDe76},
+                                   {"iterations", e.fit.iterations}};
+        nlohmann::ordered_json err;
+        for (const IdtError& s : e.errors)
+        {
+            err[s.set] = {{"mean", s.mean}, {"p95", s.p95}, {"max", s.max}};
+        }
+        i["error"] = err;
+        if (!e.colorSpace.empty())
+        {
+            i["colorspace"] = e.colorSpace;
+        }
+        j["idts"].push_back(i);
+    }
+    if (r.hasAsShot)
+    {
+        j["as_shot"] = {{"neutral", r.asShotNeutral},  {"cct", r.asShot.cct},
+                        {"duv", r.asShot.duv},         {"nearest", r.asShot.nearest},
+                        {"family", r.asShot.family},   {"family_kelvin", r.asShot.familyKelvin},
+                        {"light", r.idts.back().light}};
+    }
+    if (r.interpolateFrom >= 0)
+    {
+        nlohmann::ordered_json curve = nlohmann::ordered_json::array();
+        for (const IdtInterpolationPoint& p : r.interpolation)
+        {
+            curve.push_back({{"cct", p.cct},
+                             {"mean_vs_direct", p.meanVsDirect},
+                             {"max_vs_direct", p.maxVsDirect},
+                             {"interpolated_mean", p.interpolatedMean},
+                             {"direct_mean", p.directMean},
+                             {"dng_clamped_mean", p.clampedMean}});
+        }
+        j["interpolation"] = {{"from", r.idts[size_t(r.interpolateFrom)].light},
+                              {"to", r.idts[size_t(r.interpolateTo)].light},
+                              {"set", r.testName},
+                              {"curve", curve}};
+    }
+    if (r.chart)
+    {
+        j["chart"] = {{"patches", r.trainingCount}, {"neutral_patch", r.chartNeutral}};
+        if (r.hasChartRootPolynomial)
+        {
+            const Eigen::MatrixXd& m = r.chartRootPolynomial.matrix();
+            nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+            for (int row = 0; row < 3; ++row)
+            {
+                std::vector<double> v(size_t(m.cols()));
+                for (int c = 0; c < m.cols(); ++c)
+                {
+                    v[size_t(c)] = m(row, c);
+                }
+                rows.push_back(v);
+            }
+            const IdtError& e = r.chartRootPolynomialError;
+            j["chart"]["rootpoly"] = {
+                {"degree", r.chartRootPolynomial.degree()},
+                {"matrix", rows},
+                {"error", {{e.set, {{"mean", e.mean}, {"p95", e.p95}, {"max", e.max}}}}}};
+        }
+    }
+    return j.dump(2);
+}
+
+std::string IdtReport(const IdtResult& r)
+{
+    std::ostringstream o;
+    const RgbSpace& ws = FindRgbSpace(r.workingSpace);
+    if (r.chart)
+    {
+        o << "Chart IDT: " << r.trainingCount << " patches of " << r.trainingName
+          << ", white balance from " << r.chartNeutral << "; to " << ws.displayName << " ("
+          << r.adaptation << ")\n";
+        if (r.hasChartRootPolynomial)
+        {
+            const IdtError& e = r.chartRootPolynomialError;
+            o << "Root polynomial of degree " << r.chartRootPolynomial.degree()
+              << " on the chart (exposure invariant): dE00 mean " << Fixed(e.mean, 3) << ", p95 "
+              << Fixed(e.p95, 3) << ", max " << Fixed(e.max, 3) << "\n";
+        }
+    }
+    else
+    {
+        o << "Camera " << r.camera << " to " << ws.displayName << " (" << r.adaptation
+          << "), fitted on " << r.trainingName << " (" << r.trainingCount << "), tested on "
+          << r.testName << " (" << r.testCount << ")\n";
+    }
+    for (const IdtEntry& e : r.idts)
+    {
+        o << "\n"
+          << e.light << ": CCT " << Fixed(e.cct, 0) << " K, Duv " << Fixed(e.duv, 4)
+          << "\n  gains     " << Fixed(e.fit.gains.x(), 6) << " " << Fixed(e.fit.gains.y(), 6)
+          << " " << Fixed(e.fit.gains.z(), 6) << "\n  matrix    " << Row(e.fit.matrix, 0)
+          << "\n            " << Row(e.fit.matrix, 1) << "\n            " << Row(e.fit.matrix, 2)
+          << "\n  objective rms dE76 " << Fixed(e.fit.rmsDe76, 4) << " (first order "
+          << Fixed(e.fit.firstOrderRmsDe76, 4) << ", " << e.fit.iterations << " iterations)\n";
+        for (const IdtError& s : e.errors)
+        {
+            o << "  dE00 " << s.set << ": mean " << Fixed(s.mean, 3) << ", p95 " << Fixed(s.p95, 3)
+              << ", max " << Fixed(s.max, 3) << "\n";
+        }
+        if (!e.colorSpace.empty())
+        {
+            o << "  colour space \"" << e.colorSpace << "\"\n";
+        }
+    }
+    if (r.hasAsShot)
+    {
+        o << "\nAs-shot neutral " << r.asShotNeutral[0] << "," << r.asShotNeutral[1] << ","
+          << r.asShotNeutral[2] << ": CCT " << Fixed(r.asShot.cct, 0) << " K, Duv "
+          << Fixed(r.asShot.duv, 4) << " (" << r.asShot.family << " "
+          << Fixed(r.asShot.familyKelvin, 0) << " K matches), nearest " << r.asShot.nearest << "\n";
+    }
+    if (r.interpolateFrom >= 0)
+    {
+        o << "\nInterpolated in mired between " << r.idts[size_t(r.interpolateFrom)].light
+          << " and " << r.idts[size_t(r.interpolateTo)].light << ", against an IDT fitted at each "
+          << "CCT, on " << r.testName
+          << " (dE00; beyond the pair the mired line is extrapolated, DNG clamps):\n"
+             "  CCT K   vs fitted mean  max    interpolated  fitted  DNG-clamped\n";
+        for (const IdtInterpolationPoint& p : r.interpolation)
+        {
+            o << "  " << Fixed(p.cct, 0) << "    " << Fixed(p.meanVsDirect, 3) << "         "
+              << Fixed(p.maxVsDirect, 3) << "  " << Fixed(p.interpolatedMean, 3) << "         "
+              << Fixed(p.directMean, 3) << "   " << Fixed(p.clampedMean, 3) << "\n";
+        }
+    }
+    return o.str();
+}
+
+}  // namespace bandlight::jobs

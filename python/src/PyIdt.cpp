@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Camera input transforms, as `bandlight idt --json` reports them: the
+// document as a dict, its matrices and gains as numpy arrays, and the config
+// it wrote as a PyOpenColorIO.Config.
+#include <optional>
+
+#include "PyBandlight.h"
+#include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/IdtJob.h"
+
+namespace bandlight::python
+{
+
+namespace
+{
+
+/// Lights or remittance names as the command's lists take them: a
+/// comma-separated str, or a sequence of names and files.
+std::vector<std::string> ToNames(const py::object& arg, const std::string& what)
+{
+    if (arg.is_none())
+    {
+        return {};
+    }
+    if (py::isinstance<py::str>(arg))
+    {
+        return jobs::SplitList(arg.cast<std::string>());
+    }
+    std::vector<std::string> out;
+    for (const py::handle item : CastTo<py::list>(py::list(arg), what, "a sequence"))
+    {
+        out.push_back(PathText(item, what));
+    }
+    return out;
+}
+
+std::string OptionalPath(const std::optional<Path>& p)
+{
+    return p ? p->string() : "";
+}
+
+py::object Idt(const std::optional<Path>& camera, const py::object& lights,
+               const std::string& workingSpace, const std::string& adaptation,
+               const py::object& observer, const std::optional<Path>& training,
+               const py::object& testSet, const py::object& interpolate,
+               const py::object& asShotNeutral, const std::optional<Path>& chartRgb,
+               const py::object& chart, const py::object& light, int rootpoly,
+               const std::optional<Path>& json, const std::optional<Path>& config,
+               const std::optional<Path>& base, const std::optional<Path>& out,
+               const std::optional<std::string>& baseSpace)
+{
+    using namespace pybind11::literals;
+    jobs::IdtRequest r;
+    r.camera = OptionalPath(camera);
+    r.lights = ToNames(lights, "lights");
+    r.workingSpace = workingSpace;
+    r.adaptation = adaptation;
+    r.observer = py::str(observer).cast<std::string>();
+    r.training = OptionalPath(training);
+    r.testSet = PathText(testSet, "test_set");
+    r.interpolate = ToNames(interpolate, "interpolate");
+    if (!interpolate.is_none() && r.interpolate.size() != 2)
+    {
+        throw ParameterError("{interpolate} takes two lights, not " +
+                             std::to_string(r.interpolate.size()));
+    }
+    if (!asShotNeutral.is_none())
+    {
+        r.asShotNeutral =
+            CastTo<std::vector<double>>(asShotNeutral, "as_shot_neutral", "three numbers R, G, B");
+    }
+    r.chartRgb = OptionalPath(chartRgb);
+    r.chart = chart.is_none() ? "" : PathText(chart, "chart");
+    r.chartLight = light.is_none() ? "" : PathText(light, "light");
+    r.chartRootPolynomial = rootpoly;
+    r.json = OptionalPath(json);
+    r.config = OptionalPath(config);
+    r.base = OptionalPath(base);
+    r.out = OptionalPath(out);
+    r.baseSpace = baseSpace.value_or("");
+    jobs::IdtResult result;
+    {
+        py::gil_scoped_release release;
+        result = jobs::MakeIdt(r, Warnings());
+    }
+    py::dict doc = py::module_::import("json").attr("loads")(jobs::IdtDocument(result));
+    const py::object array = py::module_::import("numpy").attr("array");
+    for (const py::handle i : doc["idts"].cast<py::list>())
+    {
+        for (const char* key : {"gains", "matrix", "first_order_matrix", "raw_to_working"})
+        {
+            i[key] = array(i[key], "dtype"_a = "float64");
+        }
+    }
+    const std::string written = !r.config.empty() ? r.config : r.out;
+    doc["config"] = written.empty() ? py::object(py::none())
+                                    : py::module_::import("PyOpenColorIO")
+                                          .attr("Config")
+                                          .attr("CreateFromFile")(written + "/config.ocio");
+    return std::move(doc);
+}
+
+}  // namespace
+
+void AddIdt(py::module_& m)
+{
+    m.def("idt", &Idt, py::arg("camera") = py::none(), py::arg("lights") = py::none(),
+          py::kw_only(), py::arg("working_space") = defaults::IDT_WORKING_SPACE,
+          py::arg("adaptation") = defaults::ADAPTATION, py::arg("observer") = defaults::OBSERVER,
+          py::arg("training") = py::none(), py::arg("test_set") = defaults::IDT_TEST_SET,
+          py::arg("interpolate") = py::none(), py::arg("as_shot_neutral") = py::none(),
+          py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
+          py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY,
+          py::arg("json") = py::none(), py::arg("config") = py::none(),
+          py::arg("base") = py::none(), py::arg("out") = py::none(),
+          py::arg("base_space") = py::none(), R"doc(
+Camera input transforms (IDTs): the job of ``bandlight idt``, returning the
+document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
+"first_order_matrix" and "raw_to_working" as numpy arrays:
+
+- "camera", "working_space", "adaptation", "training", "test_set";
+- "idts": per light {"light", "cct", "duv", "gains" (raw -> balanced, green
+  1), "matrix" (balanced camera RGB -> working space, white kept, fitted as
+  rawtoaces fits it and iterated to the optimum), "first_order_matrix" (the
+  first-order fit it started from), "raw_to_working" (matrix . diag(gains)),
+  "objective_rms_de76", "error": {SET: {"mean", "p95", "max"}} (CIEDE2000 on
+  the training set and the test set), "colorspace" (with a config)};
+- "as_shot" with as_shot_neutral: {"cct", "duv", "nearest", "family",
+  "family_kelvin", "light"} (the IDT for it is the last of "idts");
+- "interpolation" with interpolate: the IDT interpolated in mired between
+  the two lights against one fitted at each CCT, 2800-6500 K;
+- "chart" with chart_rgb: {"patches", "neutral_patch"}, and with rootpoly=2
+  or 3 "rootpoly": {"degree", "matrix", "error"}, a root polynomial fitted
+  on the chart (exposure invariant);
+- "config": the config written (config= or base= with out=), as a
+  PyOpenColorIO.Config, else None.
+
+camera: sensitivities (rawtoaces JSON, CSV, CGATS). lights: a
+comma-separated str or a sequence of built-in names, colour temperatures
+("3200K": CIE daylight from 4000 K, Planckian below) and spectrum files.
+chart_rgb, chart, light: a photographed chart's camera RGB (CSV), its
+remittances and the light, instead of camera. json, config, base/out: the
+outputs, written together; base_space: the primaries of the base's
+scene_linear when the base does not tell them. Runs with the GIL released.
+)doc");
+}
+
+}  // namespace bandlight::python

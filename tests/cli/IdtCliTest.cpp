@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `bandlight idt` as a user runs it: an ociocheck-clean config, the
+// interpolation curve and the as-shot neutral read back from its JSON.
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/RunCommand.h"
+
+using namespace bandlight;
+using Catch::Matchers::Contains;
+using test::Bandlight;
+using test::Result;
+using test::Sh;
+using test::TempPath;
+
+namespace
+{
+const std::string kD21 =
+    std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/arri_d21_380_780_5.json";
+
+nlohmann::json Json(const std::string& args)
+{
+    const Result r = Bandlight("idt --camera '" + kD21 + "' " + args + " --json -");
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.code == 0);
+    return nlohmann::json::parse(r.out);
+}
+}  // namespace
+
+TEST_CASE("idt --config writes a config ociocheck passes, with one input space per light",
+          "[cli][idt]")
+{
+    const std::string dir = TempPath("idt_config");
+    std::filesystem::remove_all(dir);
+    const Result r =
+        Bandlight("idt --camera '" + kD21 + "' --lights A,3200K,D55 --config '" + dir + "'");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.out, Contains("colour space \"Input - arri d21 - 3200K\""));
+    const Result check = Sh("ociocheck --iconfig '" + dir + "/config.ocio'");
+    INFO(check.out << check.err);
+    CHECK(check.code == 0);
+    CHECK_THAT(check.out, Contains("passed"));
+    CHECK_THAT(check.out + check.err, !Contains("ERROR"));
+    for (const char* light : {"A", "3200K", "D55"})
+    {
+        CHECK(std::filesystem::exists(dir + "/luts/Input_-_arri_d21_-_" + std::string(light) +
+                                      ".clf"));
+    }
+}
+
+TEST_CASE("idt --interpolate: the mired line stays within 0.3 dE00 of IDTs fitted at each CCT",
+          "[cli][idt]")
+{
+    const nlohmann::json j = Json("--interpolate 3200K,5600K");
+    const nlohmann::json& curve = j["interpolation"]["curve"];
+    REQUIRE(curve.size() == 38);  // 2800–6500 K every 100 K
+    CHECK(curve.front()["cct"] == 2800.0);
+    CHECK(curve.back()["cct"] == 6500.0);
+    for (const nlohmann::json& p : curve)
+    {
+        INFO(p.dump());
+        CHECK(std::abs(p["interpolated_mean"].get<double>() - p["direct_mean"].get<double>()) <
+              0.3);
+    }
+    CHECK(j["idts"].size() == 2);
+}
+
+TEST_CASE("idt --as-shot-neutral finds the light a camera's neutral stands for", "[cli][idt]")
+{
+    for (const char* light : {"2900K", "4500K", "6500K", "9000K"})
+    {
+        // The raw neutral is the reciprocal of the light's gains.
+        const nlohmann::json fit = Json(std::string("--lights ") + light);
+        const nlohmann::json& g = fit["idts"][0]["gains"];
+        std::ostringstream neutral;
+        neutral.precision(12);
+        neutral << 1.0 / g[0].get<double>() << "," << 1.0 / g[1].get<double>() << ","
+                << 1.0 / g[2].get<double>();
+        const nlohmann::json j = Json("--as-shot-neutral " + neutral.str());
+        INFO(light << " " << j["as_shot"].dump());
+        CHECK(j["as_shot"]["cct"].get<double>() ==
+              Approx(fit["idts"][0]["cct"].get<double>()).epsilon(0.01));
+        CHECK(std::abs(j["as_shot"]["duv"].get<double>() - fit["idts"][0]["duv"].get<double>()) <
+              0.001);
+        CHECK(j["idts"].size() == 1);
+    }
+}

@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""bandlight.idt: the document `bandlight idt --json` writes, with numpy
+matrices and the written config as a PyOpenColorIO.Config."""
+
+import json
+
+import numpy as np
+import pytest
+
+import bandlight
+from conftest import SOURCE_DIR, cli_json
+
+D21 = SOURCE_DIR / "tests/data/rawtoaces/arri_d21_380_780_5.json"
+
+
+def test_idt_matches_the_command(tmp_path):
+    doc = bandlight.idt(D21, "A,3200K,D55", config=tmp_path / "cfg")
+    assert [i["light"] for i in doc["idts"]] == ["A", "3200K", "D55"]
+    for i in doc["idts"]:
+        m = i["matrix"]
+        assert isinstance(m, np.ndarray) and m.shape == (3, 3)
+        # White kept; gains normalised to green.
+        np.testing.assert_allclose(m @ np.ones(3), np.ones(3), atol=1e-12)
+        assert i["gains"][1] == 1.0
+        np.testing.assert_allclose(i["raw_to_working"], m @ np.diag(i["gains"]), rtol=1e-12)
+        assert i["objective_rms_de76"]["optimum"] <= i["objective_rms_de76"]["first_order"]
+    config = doc["config"]
+    space = config.getColorSpace("Input - arri d21 - D55")
+    assert space.getFamily() == "Input"
+    processor = config.getProcessor("Input - arri d21 - D55", "ACES2065-1").getDefaultCPUProcessor()
+    expected = doc["idts"][2]["raw_to_working"]
+    for column in range(3):
+        pixel = [0.0, 0.0, 0.0]
+        pixel[column] = 1.0
+        np.testing.assert_allclose(processor.applyRGB(pixel), expected[:, column], atol=1e-6)
+    command = cli_json("idt", "--camera", D21, "--lights", "A,3200K,D55", "--json", "-")
+    for mine, theirs in zip(doc["idts"], command["idts"]):
+        np.testing.assert_array_equal(mine["matrix"], np.array(theirs["matrix"]))
+
+
+def test_idt_refuses_a_zero_neutral():
+    with pytest.raises(ValueError, match="as_shot_neutral"):
+        bandlight.idt(D21, as_shot_neutral=(0.5, 0.0, 0.8))
+    with pytest.raises(ValueError, match="interpolate"):
+        bandlight.idt(D21, interpolate=["3200K"])
+
+
+def _rows(path):
+    return [l.split(",") for l in path.read_text().splitlines()
+            if l.strip() and not l.startswith("#") and l[0].isdigit()]
+
+
+def test_chart_idt_from_simulated_rgb_equals_the_sensitivity_idt(tmp_path):
+    # The 190 as a chart, its camera RGB simulated from the D21's
+    # sensitivities under D55 (both 380-780 nm at 5 nm).
+    chart = SOURCE_DIR / "data/ref/rawtoaces_190.csv"
+    reflect = np.array([[float(v) for v in r[1:]] for r in _rows(chart)])
+    light = np.array([float(r[1]) for r in _rows(SOURCE_DIR / "data/illuminant/D55.csv")])
+    camera = json.loads(D21.read_text())["spectral_data"]["data"]["main"]
+    sens = np.array([camera[str(nm)] for nm in range(380, 785, 5)])
+    assert reflect.shape == (81, 190) and light.shape == (81,)
+    raw = (reflect * light[:, None]).T @ sens
+    csv = tmp_path / "chart.csv"
+    csv.write_text("name,R,G,B\n" + "".join(f"p{i},{r:.17g},{g:.17g},{b:.17g}\n"
+                                           for i, (r, g, b) in enumerate(raw)))
+    with pytest.warns(bandlight.NoteWarning, match="patch18"):  # a -1.7e-18 in the file
+        from_chart = bandlight.idt(chart_rgb=csv, chart=chart, light="D55", rootpoly=2)
+    from_camera = bandlight.idt(D21, "D55")
+    assert from_chart["chart"]["patches"] == 190
+    # The root polynomial has more freedom: on its own chart it fits better.
+    poly = from_chart["chart"]["rootpoly"]
+    assert poly["degree"] == 2 and len(poly["matrix"][0]) == 6
+    chart_error = from_chart["idts"][0]["error"][str(chart)]["mean"]
+    assert 0.0 < poly["error"][str(chart)]["mean"] < chart_error
+    np.testing.assert_allclose(from_chart["idts"][0]["matrix"], from_camera["idts"][0]["matrix"],
+                               atol=1e-6)
+    np.testing.assert_allclose(from_chart["idts"][0]["gains"], from_camera["idts"][0]["gains"],
+                               atol=1e-9)

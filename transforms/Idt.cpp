@@ -1,0 +1,513 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "bandlight/transforms/Idt.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "bandlight/spectral/ColourRendering.h"
+#include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/Illuminants.h"
+#include "bandlight/transforms/Accuracy.h"
+#include "bandlight/transforms/Plates.h"
+
+namespace bandlight
+{
+
+namespace
+{
+
+/// rawtoaces and DNG take CIE daylight from this temperature up.
+constexpr double kDaylightFromK = 4000.0;
+constexpr double kLowestCctK = 1000.0;
+constexpr double kHighestCctK = 25000.0;
+
+/// The six free parameters of a matrix whose rows are fixed by
+/// M·whiteIn = whiteOut: the first two columns; the third follows.
+using Params = Eigen::Matrix<double, 6, 1>;
+
+Params ToParams(const Mat3& m)
+{
+    Params p;
+    for (int k = 0; k < 3; ++k)
+    {
+        p(2 * k) = m(k, 0);
+        p(2 * k + 1) = m(k, 1);
+    }
+    return p;
+}
+
+Mat3 FromParams(const Params& p, const ColourFit& d)
+{
+    Mat3 m;
+    for (int k = 0; k < 3; ++k)
+    {
+        m(k, 0) = p(2 * k);
+        m(k, 1) = p(2 * k + 1);
+        m(k, 2) = (d.whiteOut(k) - m(k, 0) * d.whiteIn(0) - m(k, 1) * d.whiteIn(1)) / d.whiteIn(2);
+    }
+    return m;
+}
+
+/// The raw response of the camera (on SurfaceRenderer's grid, the units
+/// CameraShot balances) to a light's white.
+Vec3 Response(const SpectralCamera& camera, const Spectrum& light)
+{
+    SurfaceRenderer::Samples s;
+    for (int i = 0; i < SurfaceRenderer::kSamples; ++i)
+    {
+        s(i) = light(SurfaceRenderer::Wavelength(i));
+    }
+    return camera.sensitivities() * s;
+}
+
+/// (log R/G, log B/G): what a neutral says about the light, any scale.
+Eigen::Vector2d LogChromaticity(const Vec3& rgb)
+{
+    return {std::log(rgb.x() / rgb.y()), std::log(rgb.z() / rgb.y())};
+}
+
+}  // namespace
+
+Spectrum IdtLightForCct(double kelvin)
+{
+    if (!(kelvin >= kLowestCctK && kelvin <= kHighestCctK))
+    {
+        throw Exception("a colour temperature for an IDT lies in 1000-25000 K, not " +
+                        std::to_string(kelvin) + " K");
+    }
+    return kelvin >= kDaylightFromK ? Daylight(kelvin) : Planckian(kelvin);
+}
+
+bool ParseCct(const std::string& text, double& kelvin)
+{
+    if (text.size() < 2 || !std::isdigit(static_cast<unsigned char>(text.front())) ||
+        (text.back() != 'K' && text.back() != 'k'))
+    {
+        return false;
+    }
+    const std::string number = text.substr(0, text.size() - 1);
+    bool dot = false;
+    for (const char c : number)
+    {
+        if (c == '.' && !dot)
+        {
+            dot = true;
+        }
+        else if (!std::isdigit(static_cast<unsigned char>(c)))
+        {
+            throw Exception("'" + OneLine(text, 80) +
+                            "' is not a colour temperature: write it as digits then K (3200K)");
+        }
+    }
+    kelvin = std::stod(number);
+    return true;
+}
+
+double LabObjective(const ColourFit& d, const Mat3& m)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < d.input.size(); ++i)
+    {
+        const Vec3 lab = XyzToLab(d.rgbToXyz * (m * d.input[i]), d.labWhite);
+        const Vec3 ref = XyzToLab(d.rgbToXyz * d.target[i], d.labWhite);
+        sum += (lab - ref).squaredNorm();
+    }
+    return sum;
+}
+
+Mat3 OptimiseLabMatrix(const ColourFit& d, const Mat3& start, int* iterations)
+{
+    if (d.input.size() != d.target.size() || !(std::abs(d.whiteIn(2)) > 0.0))
+    {
+        throw Exception("IDT fit: as many inputs as targets and a white with a blue are needed");
+    }
+    std::vector<Vec3> refs;
+    for (const Vec3& t : d.target)
+    {
+        refs.push_back(XyzToLab(d.rgbToXyz * t, d.labWhite));
+    }
+    // Gauss–Newton's normal equations and gradient at p.
+    const auto linearise = [&](const Params& p, Eigen::Matrix<double, 6, 6>& jtj, Params& jtr)
+    {
+        const Mat3 m = FromParams(p, d);
+        jtj.setZero();
+        jtr.setZero();
+        double sum = 0.0;
+        for (size_t i = 0; i < d.input.size(); ++i)
+        {
+            const Vec3& c = d.input[i];
+            const Vec3 xyz = d.rgbToXyz * (m * c);
+            const Vec3 r = XyzToLab(xyz, d.labWhite) - refs[i];
+            const Mat3 ja = LabJacobian(xyz, d.labWhite) * d.rgbToXyz;
+            Eigen::Matrix<double, 3, 6> j;
+            for (int k = 0; k < 3; ++k)
+            {
+                for (int col = 0; col < 2; ++col)
+                {
+                    // m(k, 2) moves with m(k, col) to keep the white.
+                    const double dc = c(col) - c(2) * d.whiteIn(col) / d.whiteIn(2);
+                    j.col(2 * k + col) = ja.col(k) * dc;
+                }
+            }
+            jtj += j.transpose() * j;
+            jtr += j.transpose() * r;
+            sum += r.squaredNorm();
+        }
+        return sum;
+    };
+    Params p = ToParams(start);
+    Eigen::Matrix<double, 6, 6> jtj;
+    Params jtr;
+    double cost = linearise(p, jtj, jtr);
+    double lambda = 1e-6;
+    int it = 0;
+    constexpr int kMaxIterations = 200;
+    for (; it < kMaxIterations; ++it)
+    {
+        if (jtr.norm() <= 1e-13 * (1.0 + cost))
+        {
+            break;
+        }
+        Eigen::Matrix<double, 6, 6> a = jtj;
+        a.diagonal() += lambda * jtj.diagonal();
+        const Params step = a.ldlt().solve(-jtr);
+        const Params trial = p + step;
+        Eigen::Matrix<double, 6, 6> jtjTrial;
+        Params jtrTrial;
+        const double trialCost = linearise(trial, jtjTrial, jtrTrial);
+        if (std::isfinite(trialCost) && trialCost <= cost)
+        {
+            const bool converged =
+                step.norm() <= 1e-13 * (1.0 + p.norm()) || cost - trialCost <= 1e-15 * cost;
+            p = trial;
+            cost = trialCost;
+            jtj = jtjTrial;
+            jtr = jtrTrial;
+            lambda = std::max(lambda * 0.1, 1e-12);
+            if (converged)
+            {
+                ++it;
+                break;
+            }
+        }
+        else
+        {
+            lambda *= 10.0;
+            if (lambda > 1e12)
+            {
+                break;  // no step lowers the cost: p is the optimum to rounding
+            }
+        }
+    }
+    if (iterations)
+    {
+        *iterations = it;
+    }
+    return FromParams(p, d);
+}
+
+IdtProblem::IdtProblem(const SpectralCamera& camera, const Spectrum& light, const RgbSpace& working,
+                       AdaptationMethod adaptation, Observer observer)
+    : m_shot(camera, light),
+      m_eye(light, working, observer),
+      m_balance(BalanceMatrix(light, working, adaptation, observer)),
+      m_labWhite(WorkingWhiteXyz(working)),
+      m_whiteXyz(m_eye.rgbToXyz() * m_eye.white())
+{
+}
+
+Vec3 IdtProblem::gains() const
+{
+    return m_shot.gains() / m_shot.gains().y();
+}
+
+ColourFit IdtProblem::data(const std::vector<NamedSpectrum>& set) const
+{
+    ColourFit fit;
+    for (const NamedSpectrum& t : set)
+    {
+        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
+        fit.input.push_back(m_shot.record(r));
+        fit.target.push_back(m_balance * m_eye.render(r));
+    }
+    fit.whiteIn = Vec3::Ones();
+    fit.whiteOut = Vec3::Ones();
+    fit.rgbToXyz = m_eye.rgbToXyz();
+    fit.labWhite = m_labWhite;
+    return fit;
+}
+
+Vec3 IdtProblem::raw(const Spectrum& remittance) const
+{
+    return m_shot.record(SurfaceRenderer::Sample(remittance)).cwiseQuotient(m_shot.gains());
+}
+
+IdtError IdtProblem::errors(const Mat3& idt, const std::vector<NamedSpectrum>& set,
+                            const std::string& name) const
+{
+    const ColourFit d = data(set);
+    std::vector<double> de;
+    IdtError e;
+    e.set = name;
+    e.count = int(set.size());
+    for (size_t i = 0; i < d.input.size(); ++i)
+    {
+        const Vec3 lab = XyzToLab(d.rgbToXyz * (idt * d.input[i]), d.labWhite);
+        const Vec3 ref = XyzToLab(d.rgbToXyz * d.target[i], d.labWhite);
+        de.push_back(DeltaE2000(lab, ref));
+        e.mean += de.back();
+        e.max = std::max(e.max, de.back());
+    }
+    e.mean /= de.empty() ? 1.0 : double(de.size());
+    e.p95 = Percentile(de, 0.95);
+    return e;
+}
+
+namespace
+{
+IdtFit FitOn(const ColourFit& d, const Vec3& gains, const std::string& cameraLabel)
+{
+    IdtFit f;
+    f.gains = gains;
+    try
+    {
+        f.firstOrder = FitLabMatrix(d);
+    }
+    catch (const Exception&)
+    {
+        f.firstOrder = Mat3::Zero();  // refused below, naming the camera
+    }
+    const auto singular = [](const Mat3& m)
+    { return !m.allFinite() || std::abs(m.determinant()) < 1e-12; };
+    if (singular(f.firstOrder))
+    {
+        throw Exception(cameraLabel +
+                        ": its channels do not separate colours (the fitted input transform is "
+                        "singular)");
+    }
+    f.matrix = OptimiseLabMatrix(d, f.firstOrder, &f.iterations);
+    if (singular(f.matrix))
+    {
+        throw Exception(cameraLabel + ": the fitted input transform is singular");
+    }
+    const double n = double(std::max<size_t>(d.input.size(), 1));
+    f.rmsDe76 = std::sqrt(LabObjective(d, f.matrix) / n);
+    f.firstOrderRmsDe76 = std::sqrt(LabObjective(d, f.firstOrder) / n);
+    return f;
+}
+}  // namespace
+
+IdtFit FitIdtOptimal(const IdtProblem& problem, const std::vector<NamedSpectrum>& training,
+                     const std::string& cameraLabel)
+{
+    return FitOn(problem.data(training.empty() ? Rawtoaces190() : training), problem.gains(),
+                 cameraLabel);
+}
+
+Mat3 InterpolateIdt(const Mat3& m1, double cct1, const Mat3& m2, double cct2, double cct,
+                    bool extrapolate)
+{
+    const double g1 = 1.0 / cct1, g2 = 1.0 / cct2, g = 1.0 / cct;
+    const double line = std::abs(g1 - g2) < 1e-15 ? 1.0 : (g - g2) / (g1 - g2);
+    const double w = extrapolate ? line : std::clamp(line, 0.0, 1.0);
+    return w * m1 + (1.0 - w) * m2;
+}
+
+AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
+                              const RgbSpace& working, AdaptationMethod adaptation,
+                              Observer observer)
+{
+    for (int c = 0; c < 3; ++c)
+    {
+        if (!(neutral[c] > 0.0) || !std::isfinite(neutral[c]))
+        {
+            throw Exception("an as-shot neutral has three positive, finite channels");
+        }
+    }
+    const Eigen::Vector2d target = LogChromaticity(neutral);
+    struct Family
+    {
+        const char* name;
+        double lowK;
+        Spectrum (*light)(double);
+    };
+    const Family families[] = {
+        {"planckian", kLowestCctK, [](double k) { return Planckian(k); }},
+        {"daylight", kDaylightFromK, [](double k) { return Daylight(k); }},
+    };
+    AsShotEstimate best;
+    best.residual = std::numeric_limits<double>::infinity();
+    for (const Family& f : families)
+    {
+        // Mismatch of the response at `mired` (1e6 / K).
+        const auto mismatch = [&](double mired)
+        {
+            const Vec3 r = Response(camera, f.light(std::clamp(1e6 / mired, f.lowK, kHighestCctK)));
+            if (!(r.minCoeff() > 0.0))
+            {
+                return std::numeric_limits<double>::infinity();
+            }
+            return (LogChromaticity(r) - target).norm();
+        };
+        const double lo = 1e6 / kHighestCctK, hi = 1e6 / f.lowK;
+        constexpr double kStepMired = 0.5;
+        double at = lo, atValue = std::numeric_limits<double>::infinity();
+        for (double m = lo; m <= hi + 1e-9; m += kStepMired)
+        {
+            const double v = mismatch(std::min(m, hi));
+            if (v < atValue)
+            {
+                atValue = v;
+                at = std::min(m, hi);
+            }
+        }
+        // Golden section inside the grid step either side.
+        double a = std::max(lo, at - kStepMired), b = std::min(hi, at + kStepMired);
+        const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
+        double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+        double f1 = mismatch(x1), f2 = mismatch(x2);
+        for (int i = 0; i < 80 && b - a > 1e-10; ++i)
+        {
+            if (f1 < f2)
+            {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - phi * (b - a);
+                f1 = mismatch(x1);
+            }
+            else
+            {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + phi * (b - a);
+                f2 = mismatch(x2);
+            }
+        }
+        const double mired = f1 < f2 ? x1 : x2;
+        const double value = std::min(f1, f2);
+        if (std::min(value, atValue) < best.residual)
+        {
+            best.family = f.name;
+            best.familyKelvin = 1e6 / (value <= atValue ? mired : at);
+            best.residual = std::min(value, atValue);
+        }
+    }
+    if (!std::isfinite(best.residual))
+    {
+        throw Exception(camera.label() +
+                        ": no daylight or Planckian light gives a response in "
+                        "every channel");
+    }
+    best.familyKelvin = std::clamp(best.familyKelvin, kLowestCctK, kHighestCctK);
+    best.light = best.family == std::string("daylight")
+                     ? Daylight(std::max(best.familyKelvin, kDaylightFromK))
+                     : Planckian(best.familyKelvin);
+    // The white the neutral stands for: balanced by the matched light's
+    // gains, through its IDT to balanced working RGB, and back to XYZ under
+    // the light (the balance undone). An exact match gives the light's white.
+    const IdtProblem problem(camera, best.light, working, adaptation, observer);
+    const ColourFit d = problem.data(Rawtoaces190());
+    const Mat3 idt = FitLabMatrix(d);
+    Vec3 balanced = neutral.cwiseProduct(problem.shot().gains());
+    balanced /= balanced.y();
+    const Mat3 balance = BalanceMatrix(best.light, working, adaptation, observer);
+    const Vec3 xyz = d.rgbToXyz * balance.inverse() * idt * balanced;
+    const CctDuv cd = ComputeCct(xyz);
+    best.cct = cd.cctK;
+    best.duv = cd.duv;
+    const Eigen::Vector2d uv = XyzToUv1960(xyz);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const std::string& name : StandardIlluminantNames())
+    {
+        const double dist =
+            (XyzToUv1960(IntegrateXyz(BuiltinIlluminant(name), Observer::CIE1931_2DEG)) - uv)
+                .norm();
+        if (dist < nearest)
+        {
+            nearest = dist;
+            best.nearest = name;
+        }
+    }
+    return best;
+}
+
+size_t FlattestRemittance(const std::vector<NamedSpectrum>& set)
+{
+    size_t best = 0;
+    double bestSpread = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < set.size(); ++i)
+    {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (double l = 400.0; l <= 700.0; l += 5.0)
+        {
+            lo = std::min(lo, set[i].spectrum(l));
+            hi = std::max(hi, set[i].spectrum(l));
+        }
+        const double spread = hi > 0.0 ? (hi - lo) / hi : std::numeric_limits<double>::infinity();
+        if (spread < bestSpread)
+        {
+            bestSpread = spread;
+            best = i;
+        }
+    }
+    return best;
+}
+
+ColourFit ChartFitData(const std::vector<Vec3>& raw, const std::vector<NamedSpectrum>& chart,
+                       const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
+                       Observer observer, Vec3* gainsOut)
+{
+    if (raw.size() != chart.size() || chart.empty())
+    {
+        throw Exception("a chart IDT needs one camera RGB per patch (" +
+                        std::to_string(raw.size()) + " RGB for " + std::to_string(chart.size()) +
+                        " patches)");
+    }
+    const SurfaceRenderer eye(light, working, observer);
+    const Mat3 balance = BalanceMatrix(light, working, adaptation, observer);
+    const size_t grey = FlattestRemittance(chart);
+    // The neutral patch's raw RGB is its luminance factor times the raw
+    // white's: the gains that make the white (1, 1, 1).
+    const SurfaceRenderer::Samples g = SurfaceRenderer::Sample(chart[grey].spectrum);
+    const double y = (eye.rgbToXyz() * eye.render(g)).y();
+    Vec3 gains;
+    for (int c = 0; c < 3; ++c)
+    {
+        if (!(raw[grey][c] > 0.0) || !(y > 0.0))
+        {
+            throw Exception("the chart's neutral patch (" + chart[grey].name +
+                            ") records nothing in a channel: no white balance exists");
+        }
+        gains[c] = y / raw[grey][c];
+    }
+    ColourFit fit;
+    for (size_t i = 0; i < chart.size(); ++i)
+    {
+        fit.input.push_back(raw[i].cwiseProduct(gains));
+        fit.target.push_back(balance * eye.render(SurfaceRenderer::Sample(chart[i].spectrum)));
+    }
+    fit.rgbToXyz = eye.rgbToXyz();
+    fit.labWhite = WorkingWhiteXyz(working);
+    if (gainsOut)
+    {
+        *gainsOut = gains / gains.y();
+    }
+    return fit;
+}
+
+IdtFit FitChartIdt(const std::vector<Vec3>& raw, const std::vector<NamedSpectrum>& chart,
+                   const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
+                   Observer observer)
+{
+    Vec3 gains;
+    const ColourFit d = ChartFitData(raw, chart, light, working, adaptation, observer, &gains);
+    return FitOn(d, gains, "the chart");
+}
+
+}  // namespace bandlight
