@@ -354,6 +354,7 @@ TEST_CASE("Commands say what they did and name lights after their files", "[cli]
     REQUIRE(r.code == 0);
     CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), Contains("bradford_A_to_tungsten3200"));
     CHECK_THAT(Slurp(dir + "/cfg/config.ocio"), !Contains("_to_value"));
+}
 
 namespace
 {
@@ -461,6 +462,7 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
     CHECK(ok.code == 0);
     CHECK_THAT(ok.err, Contains("2 light groups (fill, key), Arnold naming, beauty R, G, B"));
     CHECK(fs::is_regular_file(out));
+}
 
 TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, nothing written",
           "[cli][mistakes][idt]")

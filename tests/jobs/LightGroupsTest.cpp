@@ -397,7 +397,7 @@ TEST_CASE(
 
     SECTION("identity relight of every group reproduces the beauty")
     {
-        for (const std::string& method : {"bradford", "rootpoly", "band3"})
+        for (const std::string method : {"bradford", "rootpoly", "band3"})
         {
             INFO(method);
             ApplyRequest same = r;
@@ -694,7 +694,7 @@ TEST_CASE("render --light-groups in band and N-band mode: beauty = Σ groups in 
           "[jobs][lightgroups][render]")
 {
     const std::string dir = Fresh("bandrender");
-    for (const std::string& mode : {"band3", "band6"})
+    for (const std::string mode : {"band3", "band6"})
     {
         INFO(mode);
         RenderRequest r;
