@@ -125,6 +125,36 @@ namespace
 {
 /// A format that holds no integer code values (OpenEXR: half, float): an
 /// integer image written there becomes float values read as linear.
+/// Reads `in`, runs `process` on its pixels and writes `out` through the
+/// image module. What `process` throws comes back as it was (a
+/// ParameterError spells its parameters per face), not as the module's text.
+void TransformImage(const std::string& in, const std::string& out, const PixelProcess& process,
+                    const std::string& note, bool everyPart)
+{
+    std::exception_ptr thrown;
+    const ImageFilesStatus status = ImageFiles().transform(
+        in, out,
+        [&](float* pixels, long width, long height, int channels, const int* rgb,
+            const ImageData& header)
+        {
+            try
+            {
+                process(pixels, width, height, channels, rgb, header);
+            }
+            catch (...)
+            {
+                thrown = std::current_exception();
+                throw;
+            }
+        },
+        note, everyPart);
+    if (thrown)
+    {
+        std::rethrow_exception(thrown);
+    }
+    ThrowIfFailed(status);
+}
+
 bool IsFloatOnlyFile(const std::string& path)
 {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -139,9 +169,6 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
                                       const ImageColourRequest& colour)
 {
     std::vector<std::string> notes;
-    // What the work throws comes back as it was (a ParameterError spells
-    // its parameters per face), not as the module's text.
-    std::exception_ptr thrown;
     const auto process = [&](float* pixels, long width, long height, int channels, const int* rgb,
                              const ImageData& header)
     {
@@ -213,27 +240,7 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
             }
         }
     };
-    const ImageFilesStatus status = ImageFiles().transform(
-        in, out,
-        [&](float* pixels, long width, long height, int channels, const int* rgb,
-            const ImageData& header)
-        {
-            try
-            {
-                process(pixels, width, height, channels, rgb, header);
-            }
-            catch (...)
-            {
-                thrown = std::current_exception();
-                throw;
-            }
-        },
-        note, false);
-    if (thrown)
-    {
-        std::rethrow_exception(thrown);
-    }
-    ThrowIfFailed(status);
+    TransformImage(in, out, process, note, false);
     return notes;
 }
 
@@ -275,7 +282,6 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                  const ImageColourRequest& colour)
 {
     std::vector<std::string> notes;
-    std::exception_ptr thrown;
     int relitParts = 0;
     std::string firstError;
     const auto process = [&](float* pixels, long width, long height, int channels, const int*,
@@ -363,27 +369,7 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
         RelightLightGroups(layout, works, pixels, width, height, channels, where);
         ++relitParts;
     };
-    const ImageFilesStatus status = ImageFiles().transform(
-        in, out,
-        [&](float* pixels, long width, long height, int channels, const int* rgb,
-            const ImageData& header)
-        {
-            try
-            {
-                process(pixels, width, height, channels, rgb, header);
-            }
-            catch (...)
-            {
-                thrown = std::current_exception();
-                throw;
-            }
-        },
-        note, true);
-    if (thrown)
-    {
-        std::rethrow_exception(thrown);
-    }
-    ThrowIfFailed(status);
+    TransformImage(in, out, process, note, true);
     return notes;
 }
 

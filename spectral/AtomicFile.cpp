@@ -140,21 +140,16 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_temp(TempN
                         std::string("cannot create output file (") + std::strerror(ENOENT) + ")");
     }
     RemoveStaleTemporaries(m_path);
-    m_slot = Register(m_temp);
-    errno = 0;
-    m_stream.open(m_temp, std::ios::binary | std::ios::trunc);
-    if (!m_stream)
-    {
-        const int error = errno;
-        Unregister(m_slot);
-        throw FileError(m_path, error,
-                        std::string("cannot create output file (") + std::strerror(error) + ")");
-    }
+    open("cannot create output file");
 }
 
 AtomicFile::AtomicFile(std::string path, Scratch) : m_path(std::move(path)), m_temp(m_path)
 {
-    m_scratch = true;
+    open("cannot create a working file");
+}
+
+void AtomicFile::open(const char* failure)
+{
     m_slot = Register(m_temp);
     errno = 0;
     m_stream.open(m_temp, std::ios::binary | std::ios::trunc);
@@ -162,8 +157,7 @@ AtomicFile::AtomicFile(std::string path, Scratch) : m_path(std::move(path)), m_t
     {
         const int error = errno;
         Unregister(m_slot);
-        throw FileError(m_path, error,
-                        std::string("cannot create a working file (") + std::strerror(error) + ")");
+        throw FileError(m_path, error, std::string(failure) + " (" + std::strerror(error) + ")");
     }
 }
 

@@ -56,11 +56,13 @@ public:
 
 private:
     friend class OutputSet;
+    /// Registers the temporary file for interrupts and creates it; throws
+    /// FileError "<failure> (<strerror>)" naming the destination.
+    void open(const char* failure);
     std::string m_path;
     std::string m_temp;
     std::ofstream m_stream;
     bool m_committed = false;
-    bool m_scratch = false;
     int m_slot = -1;  ///< registration for RemoveTemporaryFilesOnInterrupt()
 };
 
