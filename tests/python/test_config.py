@@ -120,7 +120,10 @@ def test_config_errors_are_the_commands(tmp_path):
 ])
 def test_luts_equal_the_commands(tmp_path, method, fmt, size):
     ext = {"resolve_cube": "cube"}.get(fmt, fmt)
-    py_path, cli_path = tmp_path / f"py.{ext}", tmp_path / f"cli.{ext}"
+    # The same file name in two folders: a .cube names its companion shaper.
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    py_path, cli_path = tmp_path / "py" / f"lut.{ext}", tmp_path / "cli" / f"lut.{ext}"
     extra = {"shaper": "none"} if fmt == "resolve_cube" else {}
     result = bandlight.lut(py_path, "A", "F2", method, format=fmt, size=size, **extra)
     args = ["--size", size] if size else []
@@ -131,9 +134,9 @@ def test_luts_equal_the_commands(tmp_path, method, fmt, size):
     assert result["lut"] == str(py_path)
     assert result["lattice"] == (size is not None or method == "rootpoly")
     if fmt in ("cube", "spi3d"):
-        shaper_py = tmp_path / "py.shaper.clf"
+        shaper_py = tmp_path / "py" / "lut.shaper.clf"
         assert result["shaper"] == str(shaper_py)
-        assert shaper_py.read_bytes() == (tmp_path / "cli.shaper.clf").read_bytes()
+        assert shaper_py.read_bytes() == (tmp_path / "cli" / "lut.shaper.clf").read_bytes()
     else:
         assert result["shaper"] is None
 
@@ -145,7 +148,10 @@ def test_luts_equal_the_commands(tmp_path, method, fmt, size):
 ])
 def test_log_encoded_luts_equal_the_commands(tmp_path, method, fmt, encoding):
     ext = {"resolve_cube": "cube", "houdini": "lut"}.get(fmt, fmt)
-    py_path, cli_path = tmp_path / f"py.{ext}", tmp_path / f"cli.{ext}"
+    # The same file name in two folders: a .cube names its companion shaper.
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    py_path, cli_path = tmp_path / "py" / f"lut.{ext}", tmp_path / "cli" / f"lut.{ext}"
     result = bandlight.lut(py_path, "A", "D65", method, format=fmt, size=9, encoding=encoding)
     run_cli("lut", "--from", "A", "--to", "D65", "--method", method, "--format", fmt,
             "--size", 9, "--encoding", encoding, "-o", cli_path)
