@@ -44,8 +44,9 @@ jobs::RelightRequest SideChange(const ApplyOptions& o, const CLI::App& cmd,
     return side.relight(reporter);
 }
 
-/// --light-group NAME=FROM:TO (a change of light) or NAME=LAYER (where a
-/// file names the group otherwise) into the request.
+/// --light-group NAME=FROM:TO[@METHOD] (a change of light, with its own
+/// method) or NAME=LAYER (where a file names the group otherwise) into the
+/// request.
 void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& reporter)
 {
     for (const std::string& item : o.lightGroups)
@@ -59,7 +60,21 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
                 OneLine(item, 80) + "'");
         }
         const std::string name = item.substr(0, eq);
-        const std::string value = item.substr(eq + 1);
+        std::string value = item.substr(eq + 1);
+        // A method of its own after '@' (key=A:D65@rootpoly); --method otherwise.
+        std::string method;
+        const size_t at = value.rfind('@');
+        if (at != std::string::npos)
+        {
+            method = value.substr(at + 1);
+            value = value.substr(0, at);
+            if (method.empty() || value.find(':') == std::string::npos)
+            {
+                throw ParameterError("{light_group} " + OneLine(item, 80) +
+                                     ": a group's own method follows its change of light, "
+                                     "NAME=FROM:TO@METHOD");
+            }
+        }
         const size_t colon = value.rfind(':');
         if (colon == std::string::npos)
         {
@@ -74,6 +89,10 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
         RelightOptions group = o.relight;
         group.from = value.substr(0, colon);
         group.to = value.substr(colon + 1);
+        if (!method.empty())
+        {
+            group.method = method;
+        }
         const CLI::Option* plates = cmd.get_option_no_throw("--plates");
         if (!plates || plates->count() == 0)
         {
@@ -183,8 +202,9 @@ void AddApplyCommand(CLI::App& app)
                     "or srgb");
     AddRelightOptions(*cmd, o->relight, false);
     cmd->add_option("--light-group", o->lightGroups,
-                    "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO "
-                    "(repeatable; --method, --working-space and the plates apply to each; "
+                    "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO, "
+                    "or NAME=FROM:TO@METHOD with a method of its own (repeatable; --method, "
+                    "--working-space and the plates apply to each; "
                     "--plates defaults to " +
                         std::string(defaults::LIGHT_GROUP_PLATES) +
                         " here). The beauty becomes the sum of the groups plus the residual. "

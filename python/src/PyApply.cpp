@@ -87,18 +87,21 @@ py::dict Apply(const py::object& input, const py::object& output,
         for (const auto& [key, value] :
              CastTo<py::dict>(lightGroups, "light_groups", "a dict {group: (src, dst)}"))
         {
-            const py::tuple lights =
-                CastTo<py::tuple>(value, "a light group's change", "a tuple (src, dst)");
-            if (lights.size() != 2)
+            const py::tuple lights = CastTo<py::tuple>(value, "a light group's change",
+                                                       "a tuple (src, dst) or (src, dst, method)");
+            if (lights.size() != 2 && lights.size() != 3)
             {
-                throw ParameterError("{light_groups} takes {group: (src, dst)}");
+                throw ParameterError(
+                    "{light_groups} takes {group: (src, dst)} or {group: (src, dst, method)}");
             }
             jobs::LightGroupRelight g;
             g.group = CastTo<std::string>(key, "a group's name", "str");
             g.relight.plates = platesArgs.options();
             g.relight.src = ToLight(lights[0]);
             g.relight.dst = ToLight(lights[1]);
-            g.relight.method = method;
+            g.relight.method = lights.size() == 3
+                                   ? CastTo<std::string>(lights[2], "a group's method", "str")
+                                   : method;
             g.relight.workingSpace = working;
             g.relight.observer = py::str(observer).cast<std::string>();
             if (!training.is_none())
@@ -186,7 +189,7 @@ keep_going: a frame that fails does not stop the others; it is listed in
 "failed" (without it, the first failure raises).
 light_groups: {group: (src, dst)}, instead of src and dst: each light group
 of a multi-layer EXR (Blender/Cycles, Arnold or bandlight naming) relit on
-its own with method, the beauty written as the relit groups plus the
+its own with method (or its own, {group: (src, dst, method)}), the beauty written as the relit groups plus the
 residual, everything else kept (docs/lightgroups.md); plates then defaults
 to "lit". light_group_layers: {group: layer prefix or "r,g,b"} for a file
 that names its groups otherwise.

@@ -103,3 +103,41 @@ def test_spectral_light_groups_exact_and_named(tmp_path):
                            plates="balanced")
     assert not (tmp_path / "bad.exr").exists()
     assert same.is_file() and integrated.is_file()
+
+
+def test_each_group_takes_a_method_of_its_own(tmp_path):
+    # key=A:D65@rootpoly beside fill with --method bradford: each group as a
+    # run with that group's method for every group gives it.
+    from conftest import SCENES, run_cli
+    shot = tmp_path / "shot.exr"
+    bandlight.render(SCENES / "two_lights.yaml", out=shot, light_groups=True, mode="band3",
+                     preview=False)
+
+    def layers(path):
+        import OpenImageIO as oiio
+        i = oiio.ImageInput.open(str(path))
+        px, names = i.read_image("float"), i.spec().channelnames
+        i.close()
+        return {n: px[..., c] for c, n in enumerate(names)}
+
+    run_cli("apply", shot, tmp_path / "mixed.exr", "--light-group", "key=A:D65@rootpoly",
+            "--light-group", "fill=F11:D50", "--method", "bradford")
+    for method in ("rootpoly", "bradford"):
+        run_cli("apply", shot, tmp_path / f"{method}.exr", "--light-group", "key=A:D65",
+                "--light-group", "fill=F11:D50", "--method", method)
+    mixed, rp, br = (layers(tmp_path / f"{n}.exr") for n in ("mixed", "rootpoly", "bradford"))
+    for c in "RGB":
+        np.testing.assert_array_equal(mixed[f"key.{c}"], rp[f"key.{c}"])
+        np.testing.assert_array_equal(mixed[f"fill.{c}"], br[f"fill.{c}"])
+    assert np.abs(rp["key.R"] - br["key.R"]).max() > 1e-4  # the methods differ here
+    # Python takes the same as (src, dst, method).
+    with pytest.warns(bandlight.NoteWarning, match="2 light groups"):
+        bandlight.apply(shot, tmp_path / "py.exr", method="bradford",
+                        light_groups={"key": ("A", "D65", "rootpoly"), "fill": ("F11", "D50")})
+    py = layers(tmp_path / "py.exr")
+    for name in mixed:
+        np.testing.assert_array_equal(py[name], mixed[name])
+    from conftest import cli_error
+    assert "NAME=FROM:TO@METHOD" in cli_error("apply", shot, tmp_path / "bad.exr",
+                                              "--light-group", "key=A:D65@")
+    assert not (tmp_path / "bad.exr").exists()
