@@ -22,6 +22,17 @@ namespace bandlight::jobs
 
 namespace
 {
+
+/// The frame set's counts into the result.
+void Counted(const FrameRun& run, ApplyResult& result)
+{
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+}
+
 /// The frames of a request; an image may be relit in place (the result
 /// keeps its other channels, metadata and parts).
 FrameSetRequest FrameSet(const ApplyRequest& r)
@@ -199,11 +210,7 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
         FrameSet(r), reporter,
         [&](const std::string& in, const std::string& out)
         { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
-    result.frames = run.frames;
-    result.skipped = run.skipped;
-    result.failed = run.failed;
-    result.seconds = run.seconds;
-    result.sequence = run.sequence;
+    Counted(run, result);
     return result;
 }
 /// A matte's channel as weights in 0..1, one per pixel.
@@ -379,11 +386,7 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
                         CheckMatteFits(matte, i, header);
                         notes.add(ApplyToImage(mixed, i, o, result.applied, colour), i, o);
                     });
-    result.frames = run.frames;
-    result.skipped = run.skipped;
-    result.failed = run.failed;
-    result.seconds = run.seconds;
-    result.sequence = run.sequence;
+    Counted(run, result);
     return result;
 }
 
@@ -509,11 +512,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
 
     result.native = kernel.has_value() || bool(native);
     const FrameRun run = RunFrameSet(FrameSet(r), reporter, applyOne);
-    result.frames = run.frames;
-    result.skipped = run.skipped;
-    result.failed = run.failed;
-    result.seconds = run.seconds;
-    result.sequence = run.sequence;
+    Counted(run, result);
     return result;
 }
 
