@@ -97,6 +97,19 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                                     : py::module_::import("PyOpenColorIO")
                                           .attr("Config")
                                           .attr("CreateFromFile")(written + "/config.ocio");
+    // Each light's input colour space as the written config holds it.
+    py::dict spaces;
+    if (!written.empty())
+    {
+        for (const py::handle i : doc["idts"].cast<py::list>())
+        {
+            if (i.contains("colorspace"))
+            {
+                spaces[i["light"]] = doc["config"].attr("getColorSpace")(i["colorspace"]);
+            }
+        }
+    }
+    doc["colorspaces"] = spaces;
     return std::move(doc);
 }
 
@@ -133,7 +146,9 @@ document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
   or 3 "rootpoly": {"degree", "matrix", "error"}, a root polynomial fitted
   on the chart (exposure invariant);
 - "config": the config written (config= or base= with out=), as a
-  PyOpenColorIO.Config, else None.
+  PyOpenColorIO.Config, else None;
+- "colorspaces": {light: its input colour space, a PyOpenColorIO.ColorSpace
+  of that config} (empty without a config).
 
 camera: sensitivities (rawtoaces JSON, CSV, CGATS). lights: a
 comma-separated str or a sequence of built-in names, colour temperatures

@@ -27,6 +27,10 @@ def test_idt_matches_the_command(tmp_path):
     config = doc["config"]
     space = config.getColorSpace("Input - arri d21 - D55")
     assert space.getFamily() == "Input"
+    # Each light's colour space, as an object of that config.
+    assert list(doc["colorspaces"]) == ["A", "3200K", "D55"]
+    assert doc["colorspaces"]["D55"].getName() == "Input - arri d21 - D55"
+    assert doc["colorspaces"]["A"].getEncoding() == "scene-linear"
     processor = config.getProcessor("Input - arri d21 - D55", "ACES2065-1").getDefaultCPUProcessor()
     expected = doc["idts"][2]["raw_to_working"]
     for column in range(3):
