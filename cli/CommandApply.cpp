@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight apply`: re-light images (and frame sequences) through
 // OpenImageIO (jobs/ApplyJob).
+#include <algorithm>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "bandlight/jobs/ApplyJob.h"
 #include "bandlight/jobs/Defaults.h"
 #include "bandlight/spectral/Parallel.h"
+#include "bandlight/spectral/TextFile.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
@@ -22,6 +25,10 @@ struct ApplyOptions
     jobs::ApplyRequest request;
     RelightOptions relight;
     std::vector<std::string> lightGroups;  ///< NAME=FROM:TO or NAME=LAYER
+    /// Where each of lightGroups came from: "" for the command line,
+    /// "FILE:LINE" for a --light-group-file line.
+    std::vector<std::string> lightGroupSources;
+    std::string lightGroupFile;  ///< one NAME=FROM:TO[@METHOD] per line
     std::string lookInside;                ///< FROM:TO
     std::string lookOutside;
 };
@@ -47,9 +54,9 @@ jobs::RelightRequest SideChange(const ApplyOptions& o, const CLI::App& cmd,
 /// --light-group NAME=FROM:TO[@METHOD] (a change of light, with its own
 /// method) or NAME=LAYER (where a file names the group otherwise) into the
 /// request.
-void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& reporter)
+void AddLightGroup(ApplyOptions& o, const CLI::App& cmd, const std::string& item,
+                   jobs::Reporter& reporter)
 {
-    for (const std::string& item : o.lightGroups)
     {
         const size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
@@ -79,7 +86,7 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
         if (colon == std::string::npos)
         {
             o.request.lightGroupLayers[name] = value;
-            continue;
+            return;
         }
         if (colon == 0 || colon + 1 == value.size())
         {
@@ -104,9 +111,65 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
     }
 }
 
+/// The lines of --light-group-file after the command line's groups: one
+/// NAME=FROM:TO[@METHOD] (or NAME=LAYER) per line, # comments and blank
+/// lines skipped, each remembered with its line for the messages.
+void ReadLightGroupFile(ApplyOptions& o)
+{
+    o.lightGroupSources.assign(o.lightGroups.size(), "");
+    if (o.lightGroupFile.empty())
+    {
+        return;
+    }
+    std::string text = ReadTextFile(o.lightGroupFile, "light-group file");
+    CheckUtf8Text(text, o.lightGroupFile);
+    std::istringstream in(text);
+    std::string line;
+    size_t number = 0;
+    while (std::getline(in, line))
+    {
+        ++number;
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+        {
+            continue;
+        }
+        const size_t last = line.find_last_not_of(" \t\r");
+        o.lightGroups.push_back(line.substr(first, last - first + 1));
+        o.lightGroupSources.push_back(SourcePosition(o.lightGroupFile, number));
+    }
+    if (o.lightGroups.size() == o.lightGroupSources.size() &&
+        std::all_of(o.lightGroupSources.begin(), o.lightGroupSources.end(),
+                    [](const std::string& s) { return s.empty(); }))
+    {
+        throw Exception(o.lightGroupFile + ": lists no light group (one NAME=FROM:TO per line)");
+    }
+}
+
+void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& reporter)
+{
+    for (size_t i = 0; i < o.lightGroups.size(); ++i)
+    {
+        try
+        {
+            AddLightGroup(o, cmd, o.lightGroups[i], reporter);
+        }
+        catch (const ParameterError& e)
+        {
+            if (o.lightGroupSources[i].empty())
+            {
+                throw;
+            }
+            // A file's line: named by its position, not by the option.
+            throw Exception(o.lightGroupSources[i] + ": " + e.spelled(Face::COMMAND));
+        }
+    }
+}
+
 void RunApply(ApplyOptions& o, const CLI::App& cmd)
 {
     FrameSetReporter reporter;
+    ReadLightGroupFile(o);
     const std::vector<std::string> given = GivenRelightOptions(cmd);
     if (!o.request.look.empty() && !given.empty())
     {
@@ -210,6 +273,10 @@ void AddApplyCommand(CLI::App& app)
                         " here). The beauty becomes the sum of the groups plus the residual. "
                         "NAME=LAYER names where a group is when the file's naming is not "
                         "Blender's, Arnold's or bandlight's (a layer prefix, or r,g,b channels)");
+    cmd->add_option("--light-group-file", o->lightGroupFile,
+                    "The light groups of a shot with many: one --light-group value per line "
+                    "(NAME=FROM:TO[@METHOD] or NAME=LAYER; # comments), after any given on "
+                    "the command line");
     cmd->add_option("--matte", r.matte,
                     "A matte (MATTE.exr, or MATTE.exr:CHANNEL; default its A, Y or only "
                     "channel) for a plate lit by two lights: --look-inside relights where the "

@@ -140,4 +140,19 @@ def test_each_group_takes_a_method_of_its_own(tmp_path):
     from conftest import cli_error
     assert "NAME=FROM:TO@METHOD" in cli_error("apply", shot, tmp_path / "bad.exr",
                                               "--light-group", "key=A:D65@")
+    # A shot with many groups lists them in a file, one per line, the same.
+    (tmp_path / "groups.txt").write_text("# the key's tungsten, by rootpoly\n"
+                                         "key=A:D65@rootpoly\n\n  fill=F11:D50  \n")
+    run_cli("apply", shot, tmp_path / "file.exr", "--light-group-file",
+            tmp_path / "groups.txt", "--method", "bradford")
+    from_file = layers(tmp_path / "file.exr")
+    for name in mixed:
+        np.testing.assert_array_equal(from_file[name], mixed[name])
+    # A bad line is named by its file and line.
+    (tmp_path / "bad.txt").write_text("key=A:D65\nfill=F11:\n")
+    assert cli_error("apply", shot, tmp_path / "bad.exr", "--light-group-file",
+                     tmp_path / "bad.txt").startswith(f"{tmp_path / 'bad.txt'}:2: ")
+    (tmp_path / "empty.txt").write_text("# nothing\n")
+    assert "lists no light group" in cli_error("apply", shot, tmp_path / "bad.exr",
+                                               "--light-group-file", tmp_path / "empty.txt")
     assert not (tmp_path / "bad.exr").exists()
