@@ -245,11 +245,6 @@ std::string Describe(const IdtEntry& e, const std::string& camera, const IdtResu
 
 }  // namespace
 
-std::string IdtColorSpaceName(const std::string& camera, const std::string& light)
-{
-    return "Input - " + camera + " - " + light;
-}
-
 IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
 {
     CheckOptions(r);

@@ -121,8 +121,5 @@ std::string IdtDocument(const IdtResult& result);
 /// The text report of a result.
 std::string IdtReport(const IdtResult& result);
 
-/// The name of a camera's input colour space for a light:
-/// "Input - <camera> - <light>".
-std::string IdtColorSpaceName(const std::string& camera, const std::string& light);
 
 }  // namespace bandlight::jobs

@@ -510,4 +510,9 @@ IdtFit FitChartIdt(const std::vector<Vec3>& raw, const std::vector<NamedSpectrum
     return FitOn(d, gains, "the chart");
 }
 
+std::string IdtColorSpaceName(const std::string& camera, const std::string& light)
+{
+    return "Input - " + camera + " - " + light;
+}
+
 }  // namespace bandlight

@@ -158,4 +158,8 @@ ColourFit ChartFitData(const std::vector<Vec3>& raw, const std::vector<NamedSpec
                        const Spectrum& light, const RgbSpace& working, AdaptationMethod adaptation,
                        Observer observer, Vec3* gains = nullptr);
 
+/// The name of a camera's input colour space for a light:
+/// "Input - <camera> - <light>".
+std::string IdtColorSpaceName(const std::string& camera, const std::string& light);
+
 }  // namespace bandlight

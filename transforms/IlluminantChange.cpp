@@ -17,6 +17,7 @@
 #include "bandlight/spectral/Illuminants.h"
 #include "bandlight/spectral/Parallel.h"
 #include "bandlight/transforms/BandModel.h"
+#include "bandlight/transforms/Idt.h"
 #include "bandlight/transforms/Methods.h"
 #include "bandlight/transforms/SpectralMethods.h"
 #include "bandlight/transforms/Upsampler.h"
@@ -368,6 +369,14 @@ std::string LookDescription(const Light& from, const Light& to, const MethodSpec
 {
     std::string text = "Relight from " + from.name + " to " + to.name + " in " +
                        working.displayName + ". " + DescribeMethod(method) + " ";
+    if (method.entry().needsCamera && method.camera)
+    {
+        // The plates it expects come through the camera's one fixed IDT:
+        // the input colour space `bandlight idt` writes for that light.
+        text += "Expects plates read through the input colour space '" +
+                IdtColorSpaceName(method.camera->name(), method.idtLightName) +
+                "' (bandlight idt --camera ... --lights " + method.idtLightName + "). ";
+    }
     if (!method.plates.balanced() || method.entry().isReference())
     {
         return text + method.plates.describe(working.displayName);

@@ -80,3 +80,16 @@ def test_chart_idt_from_simulated_rgb_equals_the_sensitivity_idt(tmp_path):
                                atol=1e-6)
     np.testing.assert_allclose(from_chart["idts"][0]["gains"], from_camera["idts"][0]["gains"],
                                atol=1e-9)
+
+
+def test_camera_looks_name_the_input_space_they_expect(tmp_path):
+    # rootpoly-camera looks take plates through the camera's one fixed IDT:
+    # their description names the colour space `idt` writes for that light.
+    doc = bandlight.idt(D21, "D55", config=tmp_path / "camera")
+    space = doc["idts"][0]["colorspace"]
+    looks = bandlight.config(tmp_path / "looks", illuminants="A,D65",
+                             methods=["rootpoly-camera"], camera=D21,
+                             camera_idt="D55")
+    described = [looks.getLook(n).getDescription() for n in looks.getLookNames()]
+    assert described and all(f"input colour space '{space}'" in d for d in described)
+    assert doc["config"].getColorSpace(space) is not None
