@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "cli/Commands.h"
-#include "cli/Common.h"
 #include "bandlight/jobs/RenderJob.h"
 #include "bandlight/spectral/Parallel.h"
+#include "cli/Commands.h"
+#include "cli/Common.h"
 
 namespace bandlight::cli
 {
@@ -52,7 +52,7 @@ void RunRender(const RenderOptions& o)
     }
     if (const auto& compare = result.comparison)
     {
-        const jobs::DeltaESummary& s = compare->summary;
+        const DeltaESummary& s = compare->summary;
         std::cout << "compare with spectral: " << s.pixels << " pixels, ΔE00 mean "
                   << Fixed(s.mean, 3) << ", p95 " << Fixed(s.p95, 3) << ", max " << Fixed(s.max, 3)
                   << " (" << compare->exr << ", _dE00.png: black 0, white >= 10)\n";

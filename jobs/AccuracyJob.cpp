@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Gnuplot.h"
 #include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/jobs/detail/AccuracySummary.h"
-#include "bandlight/jobs/detail/PlotLabels.h"
 #include "bandlight/plugin/OcioTransforms.h"
+#include "bandlight/report/Gnuplot.h"
+#include "bandlight/report/detail/AccuracySummary.h"
+#include "bandlight/report/detail/PlotLabels.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Exception.h"
 

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "bandlight/jobs/AccuracyJob.h"
-#include "bandlight/jobs/detail/AccuracySummary.h"
+#include "bandlight/report/detail/AccuracySummary.h"
 
 namespace bandlight::jobs
 {

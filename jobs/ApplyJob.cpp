@@ -12,6 +12,7 @@
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/ImageApply.h"
 #include "bandlight/jobs/LightGroups.h"
+#include "bandlight/plugin/NativeKernels.h"
 #include "bandlight/plugin/OcioTransforms.h"
 #include "bandlight/plugin/SceneLinearEvidence.h"
 #include "bandlight/spectral/Exception.h"

@@ -9,8 +9,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/jobs/ImageColour.h"
-#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/imageio/ImageColour.h"
+#include "bandlight/imageio/ImageFiles.h"
 #include "bandlight/jobs/LightGroups.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/RgbSpaces.h"
@@ -86,30 +86,10 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                  const std::string& note,
                                                  const ImageColourRequest& colour);
 
-/// The clamp and affine 3×3 an optimised OCIO processor consists of, when
-/// it is nothing else: a RangeTransform that only clamps (both bounds
-/// finite, in = out) followed by a MatrixTransform that leaves alpha alone.
-/// Any other op, a matrix without a clamp (NaN would reach OCIO's 4×4 and
-/// its alpha), and any look that optimises to more, gives nullopt: it goes
-/// through OCIO.
-std::optional<ClampMatrixKernel> NativeClampMatrix(const OCIO::ConstProcessorRcPtr& processor);
-
 /// Applies a processor in place to an interleaved float image with RGB in
 /// channels rgb[0..2] and `channels` channels per pixel, split by rows over
 /// `threads` threads.
 void ApplyToBuffer(const OCIO::ConstCPUProcessorRcPtr& cpu, float* pixels, long width, long height,
                    int channels, const int rgb[3], int threads);
-
-/// Writes interleaved float pixels through OIIO, atomically, stored as
-/// `type`, with channel names, the colour space (and chromaticities, when
-/// given) in `description`. With `outputs`, the image joins that set of
-/// outputs (the caller commits it). Throws Exception naming the file.
-void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
-                const std::vector<std::string>& channelNames, ImageDescription description,
-                PixelType type, OutputSet* outputs = nullptr);
-
-/// The description of linear pixels in `space`: the colour space's name
-/// as the config calls it (`name`) and the space's chromaticities.
-ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name);
 
 }  // namespace bandlight::jobs

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <sstream>
 
-#include "bandlight/jobs/Gnuplot.h"
 #include "bandlight/jobs/Inputs.h"
+#include "bandlight/report/Gnuplot.h"
 #include "bandlight/spectral/CieData.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/Illuminants.h"

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/DeltaEMap.h"
 #include "bandlight/jobs/Reporter.h"
 #include "bandlight/render/Scene.h"
 #include "bandlight/render/ScenePlan.h"
 #include "bandlight/render/SceneRenderer.h"
+#include "bandlight/report/DeltaEMap.h"
 
 namespace bandlight::jobs
 {

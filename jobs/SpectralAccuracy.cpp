@@ -9,7 +9,7 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/jobs/DeltaEMap.h"
+#include "bandlight/report/DeltaEMap.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Colorimetry.h"
 #include "bandlight/spectral/Exception.h"

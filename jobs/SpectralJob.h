@@ -7,12 +7,12 @@
 
 #include <Eigen/Core>
 
+#include "bandlight/imageio/ImageFiles.h"
+#include "bandlight/jobs/Defaults.h"
 #include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/ImageFiles.h"
 #include "bandlight/jobs/Inputs.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/SpectralImage.h"
-#include "bandlight/jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -63,7 +63,7 @@ py::dict ResultDict(jobs::RenderResult&& result)
     py::object comparison = py::none();
     if (result.comparison)
     {
-        const jobs::DeltaESummary& s = result.comparison->summary;
+        const DeltaESummary& s = result.comparison->summary;
         py::dict cd;
         cd["pixels"] = s.pixels;
         cd["mean"] = s.mean;

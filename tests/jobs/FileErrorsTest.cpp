@@ -47,9 +47,9 @@ std::string FreshDir(const std::string& name)
 void WritePlate(const std::string& path)
 {
     const std::vector<float> px(4 * 2 * 4, 0.25f);
-    jobs::WriteImage(path, px.data(), 4, 2, 4, {"R", "G", "B", "A"},
-                     jobs::LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"),
-                     jobs::PixelType::FLOAT);
+    WriteImage(path, px.data(), 4, 2, 4, {"R", "G", "B", "A"},
+                     LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"),
+                     PixelType::FLOAT);
 }
 
 jobs::ApplyRequest Relight(const std::string& in, const std::string& out)
@@ -157,7 +157,7 @@ TEST_CASE("an image written into a folder that is not there is a FileError ENOEN
 
     OutputSet set;
     e = CaughtFileError(
-        [&] { jobs::WriteImage(out, nullptr, 0, 0, 3, {}, {}, jobs::PixelType::FLOAT, &set); });
+        [&] { WriteImage(out, nullptr, 0, 0, 3, {}, {}, PixelType::FLOAT, &set); });
     CHECK(e.error() == ENOENT);
 }
 

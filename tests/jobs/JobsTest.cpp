@@ -178,9 +178,9 @@ TEST_CASE("the apply job writes the command's image, and names its parameters", 
     {
         px[i] = (i % 4 == 3) ? 1.0f : 0.01f * float(i % 97);
     }
-    jobs::WriteImage(dir + "/plate.exr", px.data(), 16, 8, 4, {"R", "G", "B", "A"},
-                     jobs::LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"),
-                     jobs::PixelType::FLOAT);
+    WriteImage(dir + "/plate.exr", px.data(), 16, 8, 4, {"R", "G", "B", "A"},
+                     LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"),
+                     PixelType::FLOAT);
     jobs::ApplyRequest request;
     request.input = dir + "/plate.exr";
     request.output = dir + "/lib.exr";
@@ -268,8 +268,8 @@ TEST_CASE("apply --look runs a matrix look of any config natively, with OCIO's p
     }
     px[0] = std::numeric_limits<float>::quiet_NaN();
     px[5] = std::numeric_limits<float>::infinity();
-    jobs::WriteImage(dir + "/plate.exr", px.data(), 64, 8, 4, {"R", "G", "B", "A"},
-                     jobs::ImageDescription{}, jobs::PixelType::FLOAT);
+    WriteImage(dir + "/plate.exr", px.data(), 64, 8, 4, {"R", "G", "B", "A"},
+                     ImageDescription{}, PixelType::FLOAT);
     for (const std::string name : {"grade", "plain", "curve"})
     {
         jobs::ApplyRequest request;

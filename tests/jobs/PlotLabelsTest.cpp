@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/detail/PlotLabels.h"
+#include "bandlight/report/detail/PlotLabels.h"
 
-using namespace bandlight::jobs::detail;
+using namespace bandlight::detail;
 
 namespace
 {

@@ -12,11 +12,11 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "cli/RunCommand.h"
 #include "bandlight/jobs/RenderJob.h"
 #include "bandlight/spectral/Colorimetry.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/RgbSpaces.h"
+#include "cli/RunCommand.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;
@@ -108,7 +108,7 @@ TEST_CASE("render --compare: the summary is the ΔE00 of the band render against
     request.compare = true;
     const jobs::RenderResult result = jobs::MakeRender(request);
     REQUIRE(result.comparison);
-    const jobs::DeltaESummary& s = result.comparison->summary;
+    const DeltaESummary& s = result.comparison->summary;
     CHECK(result.image.width == 40);
     CHECK(result.image.height == 30);
     CHECK(result.comparison->exr == dir + "/gold_dE00.exr");

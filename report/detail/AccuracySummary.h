@@ -9,7 +9,7 @@
 
 #include "bandlight/transforms/Accuracy.h"
 
-namespace bandlight::jobs::detail
+namespace bandlight::detail
 {
 
 /// Per method over all pairs: the mean of the pairs' means, the 95th
@@ -48,4 +48,4 @@ std::pair<double, double> WorstExposure(const std::vector<AccuracyRow>& rows,
 /// "2^-8" for 1/256.
 std::string Stops(double k);
 
-}  // namespace bandlight::jobs::detail
+}  // namespace bandlight::detail

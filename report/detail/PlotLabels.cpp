@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/detail/PlotLabels.h"
+#include "bandlight/report/detail/PlotLabels.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-namespace bandlight::jobs::detail
+namespace bandlight::detail
 {
 
 bool Overlap(const LabelBox& a, const LabelBox& b) noexcept
@@ -163,4 +163,4 @@ PlotLayout LayOutAccuracyPlot(const std::vector<PlotPoint>& pts, size_t anchor)
     return l;
 }
 
-}  // namespace bandlight::jobs::detail
+}  // namespace bandlight::detail

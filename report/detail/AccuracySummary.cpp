@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/detail/AccuracySummary.h"
+#include "bandlight/report/detail/AccuracySummary.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace bandlight::jobs::detail
+namespace bandlight::detail
 {
 
 const Pairs& LecturePairs()
@@ -69,4 +69,4 @@ std::string Stops(double k)
     return e == 0 ? "1" : "2^" + std::to_string(e);
 }
 
-}  // namespace bandlight::jobs::detail
+}  // namespace bandlight::detail

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/DeltaEMap.h"
+#include "bandlight/report/DeltaEMap.h"
 
 #include <algorithm>
 #include <cassert>
 #include <sstream>
 
-#include "bandlight/jobs/Gnuplot.h"
-#include "bandlight/jobs/ImageApply.h"
+#include "bandlight/imageio/ImageFiles.h"
+#include "bandlight/report/Gnuplot.h"
 #include "bandlight/transforms/Accuracy.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 
 DeltaEMap::DeltaEMap(int width, int height)
@@ -98,8 +98,7 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
            << "set size ratio -1\nunset key\nunset xtics\nunset ytics\n"
               "set yrange [*:*] reverse\nset cbrange [0:"
            << kDeltaEMapTop << "]\n"
-           << "set cblabel 'CIEDE2000 (" << kDeltaEMapTop
-           << " and above: white; slate: no data)'\n"
+           << "set cblabel 'CIEDE2000 (" << kDeltaEMapTop << " and above: white; slate: no data)'\n"
            << "set object 1 rectangle from graph 0, graph 0 to graph 1, graph 1 behind "
               "fillcolor rgb '#5b7083' fillstyle solid noborder\n"
            << "set palette defined (0 '#000004', 2 '#3b0f70', 4 '#8c2981', 6 '#de4968', "
@@ -108,4 +107,4 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
     RunGnuplot(script.str(), matrix.str(), png, &outputs);
 }
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight

@@ -5,7 +5,7 @@
 
 #include "bandlight/spectral/AtomicFile.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 
 /// `text` as a gnuplot string literal that gnuplot prints but never
@@ -47,4 +47,4 @@ void CheckPlotPath(const std::string& output);
 void RunGnuplot(const std::string& script, const std::string& data, const std::string& output,
                 OutputSet* outputs = nullptr);
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace bandlight::jobs::detail
+namespace bandlight::detail
 {
 
 /// A rectangle in the plot area's own coordinates: 0 … 1 left to right and
@@ -41,7 +41,7 @@ std::vector<LabelBox> PlaceLabels(const std::vector<LabelRequest>& labels,
                                   const std::vector<std::pair<double, double>>& obstacles,
                                   double markerWidth, double markerHeight);
 
-/// The accuracy plot's frame: a 1000 × 650 terminal (jobs/Gnuplot) whose
+/// The accuracy plot's frame: a 1000 × 650 terminal (report/Gnuplot) whose
 /// plot area is fixed at these fractions of the screen, and the label
 /// font (',10'): about 7 px a character and 15 px a line.
 constexpr double kPlotLeft = 0.08, kPlotRight = 0.76, kPlotBottom = 0.11, kPlotTop = 0.90;
@@ -69,4 +69,4 @@ struct PlotLayout
 };
 PlotLayout LayOutAccuracyPlot(const std::vector<PlotPoint>& points, size_t anchor);
 
-}  // namespace bandlight::jobs::detail
+}  // namespace bandlight::detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/Gnuplot.h"
+#include "bandlight/report/Gnuplot.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -17,7 +17,7 @@
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Exception.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 
 namespace
@@ -204,4 +204,4 @@ void RunGnuplot(const std::string& script, const std::string& data, const std::s
     own.commit();
 }
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The image-file module (see jobs/ImageFiles.h): OpenImageIO reading and
+// The image-file module (see imageio/ImageFiles.h): OpenImageIO reading and
 // writing, loaded on demand by the bandlight command.
 #include <unistd.h>
 
@@ -12,12 +12,12 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/imageio/ImageFiles.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/TextFile.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 namespace
 {
@@ -407,9 +407,9 @@ const ImageFilesApi kApi = {kImageFilesApiVersion, &Transform, &WriteImage, &Rea
                             &RemoveTemporaryFiles};
 
 }  // namespace
-}  // namespace bandlight::jobs
+}  // namespace bandlight
 
-extern "C" const bandlight::jobs::ImageFilesApi* bandlight_image_files_api()
+extern "C" const bandlight::ImageFilesApi* bandlight_image_files_api()
 {
-    return &bandlight::jobs::kApi;
+    return &bandlight::kApi;
 }

@@ -12,7 +12,10 @@
 #include <utility>
 #include <vector>
 
-namespace bandlight::jobs
+#include "bandlight/spectral/AtomicFile.h"
+#include "bandlight/spectral/RgbSpaces.h"
+
+namespace bandlight
 {
 
 enum class PixelType
@@ -111,6 +114,18 @@ constexpr int kImageFilesApiVersion = 7;
 /// $BANDLIGHT_IMAGE_MODULE).
 const ImageFilesApi& ImageFiles();
 
-}  // namespace bandlight::jobs
+/// Writes interleaved float pixels through OIIO, atomically, stored as
+/// `type`, with channel names, the colour space (and chromaticities, when
+/// given) in `description`. With `outputs`, the image joins that set of
+/// outputs (the caller commits it). Throws Exception naming the file.
+void WriteImage(const std::string& path, const float* pixels, int width, int height, int channels,
+                const std::vector<std::string>& channelNames, ImageDescription description,
+                PixelType type, OutputSet* outputs = nullptr);
 
-extern "C" const bandlight::jobs::ImageFilesApi* bandlight_image_files_api();
+/// The description of linear pixels in `space`: the colour space's name
+/// as the config calls it (`name`) and the space's chromaticities.
+ImageDescription LinearImageDescription(const RgbSpace& space, const std::string& name);
+
+}  // namespace bandlight
+
+extern "C" const bandlight::ImageFilesApi* bandlight_image_files_api();

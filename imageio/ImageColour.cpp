@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/ImageColour.h"
+#include "bandlight/imageio/ImageColour.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,7 +12,7 @@
 #include "bandlight/plugin/OcioTransforms.h"
 #include "bandlight/spectral/Exception.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 
 namespace
@@ -390,4 +390,4 @@ OCIO::ConstCPUProcessorRcPtr LinearToEncoding(const RgbSpace& from, const ImageE
     return Cpu(g);
 }
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight

@@ -13,7 +13,7 @@
 
 #include "bandlight/spectral/AtomicFile.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 
 /// The top of a map's colour scale, in ΔE00: values at or above it are
@@ -70,4 +70,4 @@ void WriteDeltaEMap(const DeltaEMap& map, const std::string& exr, const std::str
                     const std::vector<std::pair<std::string, std::string>>& attributes,
                     OutputSet& outputs);
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight

@@ -12,10 +12,10 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/jobs/ImageFiles.h"
+#include "bandlight/imageio/ImageFiles.h"
 #include "bandlight/spectral/RgbSpaces.h"
 
-namespace bandlight::jobs
+namespace bandlight
 {
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -66,4 +66,4 @@ OCIO::ConstCPUProcessorRcPtr EncodingToLinear(const ImageEncoding& from, const R
 /// The way back: linear `from` → `to`'s encoding.
 OCIO::ConstCPUProcessorRcPtr LinearToEncoding(const RgbSpace& from, const ImageEncoding& to);
 
-}  // namespace bandlight::jobs
+}  // namespace bandlight
