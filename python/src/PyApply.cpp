@@ -11,19 +11,26 @@ namespace bandlight::python
 
 namespace
 {
-py::dict Apply(const py::object& input, const py::object& output,
-               const std::optional<std::string>& frames, const std::optional<std::string>& look,
-               const py::object& config, const std::optional<std::string>& colorspace,
-               const py::object& src, const py::object& dst, const std::string& method,
-               const std::string& working, const py::object& observer, const py::object& training,
-               const std::optional<std::string>& platesArg, const std::string& adaptation,
-               const py::object& camera, const std::string& cameraIdt, int threads,
-               bool skipExisting, bool keepGoing, const py::object& lightGroups,
-               const py::object& lightGroupLayers)
+/// The keywords of a change of light, the plates resolved.
+struct ChangeArgs
 {
-    // A render's light group carries its own light's cast: lit unless said.
-    const std::string plates =
-        platesArg.value_or(lightGroups.is_none() ? defaults::PLATES : defaults::LIGHT_GROUP_PLATES);
+    py::object src;
+    py::object dst;
+    std::string method;
+    std::string working;
+    py::object observer;
+    py::object training;
+    PlatesArgs plates;
+};
+
+/// The request's files, frames, look and how it runs; the change of light
+/// is added to it apart.
+jobs::ApplyRequest FilesRequest(const py::object& input, const py::object& output,
+                                const std::optional<std::string>& frames,
+                                const std::optional<std::string>& look, const py::object& config,
+                                const std::optional<std::string>& colorspace, int threads,
+                                bool skipExisting, bool keepGoing)
+{
     jobs::ApplyRequest r;
     r.input = PathText(input, "input");
     r.output = PathText(output, "output");
@@ -34,7 +41,15 @@ py::dict Apply(const py::object& input, const py::object& output,
     r.threads = ToThreads(threads);
     r.skipExisting = skipExisting;
     r.keepGoing = keepGoing;
-    if (src.is_none() != dst.is_none())
+    return r;
+}
+
+/// Refuses keywords that contradict each other: src without dst, or a
+/// change of light beside a look.
+void RefuseConflicts(const jobs::ApplyRequest& r, const ChangeArgs& change, bool platesGiven,
+                     const py::object& lightGroups)
+{
+    if (change.src.is_none() != change.dst.is_none())
     {
         throw ParameterError("give both {src} and {dst}, or a {look}");
     }
@@ -50,96 +65,146 @@ py::dict Apply(const py::object& input, const py::object& output,
                 given += std::string(given.empty() ? "" : ", ") + name;
             }
         };
-        add(!src.is_none(), "src");
-        add(!dst.is_none(), "dst");
-        add(method != defaults::METHOD, "method");
-        add(working != defaults::WORKING_SPACE, "working_space");
-        add(!training.is_none(), "training");
-        add(platesArg.has_value(), "plates");
+        add(!change.src.is_none(), "src");
+        add(!change.dst.is_none(), "dst");
+        add(change.method != defaults::METHOD, "method");
+        add(change.working != defaults::WORKING_SPACE, "working_space");
+        add(!change.training.is_none(), "training");
+        add(platesGiven, "plates");
         add(!lightGroups.is_none(), "light_groups");
-        add(adaptation != defaults::ADAPTATION, "adaptation");
-        add(!camera.is_none(), "camera");
-        add(cameraIdt != defaults::IDT_LIGHT, "camera_idt");
+        add(change.plates.adaptation != defaults::ADAPTATION, "adaptation");
+        add(!change.plates.camera.is_none(), "camera");
+        add(change.plates.cameraIdt != defaults::IDT_LIGHT, "camera_idt");
         if (!given.empty())
         {
             throw ParameterError("{look} applies a look of {config} as it is: " + given +
                                  " do not apply to it (give the look, or the change of light)");
         }
     }
+}
+
+/// light_group_layers: {group: layer} (None: none).
+std::map<std::string, std::string> ToLightGroupLayers(const py::object& lightGroupLayers)
+{
+    std::map<std::string, std::string> layers;
     if (!lightGroupLayers.is_none())
     {
         for (const auto& [name, layer] :
              CastTo<py::dict>(lightGroupLayers, "light_group_layers", "a dict {group: layer}"))
         {
-            r.lightGroupLayers[CastTo<std::string>(name, "a group's name", "str")] =
+            layers[CastTo<std::string>(name, "a group's name", "str")] =
                 CastTo<std::string>(layer, "a group's layer", "str");
         }
     }
-    if (r.look.empty() && !lightGroups.is_none())
+    return layers;
+}
+
+/// light_groups: each group's change, {group: (src, dst)} or (src, dst,
+/// method), instead of src and dst.
+std::vector<jobs::LightGroupRelight> ToLightGroups(const py::object& lightGroups,
+                                                   const ChangeArgs& change)
+{
+    if (!change.src.is_none())
     {
-        if (!src.is_none())
+        throw ParameterError(
+            "{src} and {dst} do not apply with {light_groups}: each group "
+            "takes its own, {name: (src, dst)}");
+    }
+    std::vector<jobs::LightGroupRelight> groups;
+    for (const auto& [key, value] :
+         CastTo<py::dict>(lightGroups, "light_groups", "a dict {group: (src, dst)}"))
+    {
+        const py::tuple lights = CastTo<py::tuple>(value, "a light group's change",
+                                                   "a tuple (src, dst) or (src, dst, method)");
+        if (lights.size() != 2 && lights.size() != 3)
         {
             throw ParameterError(
-                "{src} and {dst} do not apply with {light_groups}: each group "
-                "takes its own, {name: (src, dst)}");
+                "{light_groups} takes {group: (src, dst)} or {group: (src, dst, method)}");
         }
-        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
-        for (const auto& [key, value] :
-             CastTo<py::dict>(lightGroups, "light_groups", "a dict {group: (src, dst)}"))
+        jobs::LightGroupRelight g;
+        g.group = CastTo<std::string>(key, "a group's name", "str");
+        g.relight.plates = change.plates.options();
+        g.relight.src = ToLight(lights[0]);
+        g.relight.dst = ToLight(lights[1]);
+        g.relight.method = lights.size() == 3
+                               ? CastTo<std::string>(lights[2], "a group's method", "str")
+                               : change.method;
+        g.relight.workingSpace = change.working;
+        g.relight.observer = py::str(change.observer).cast<std::string>();
+        if (!change.training.is_none())
         {
-            const py::tuple lights = CastTo<py::tuple>(value, "a light group's change",
-                                                       "a tuple (src, dst) or (src, dst, method)");
-            if (lights.size() != 2 && lights.size() != 3)
-            {
-                throw ParameterError(
-                    "{light_groups} takes {group: (src, dst)} or {group: (src, dst, method)}");
-            }
-            jobs::LightGroupRelight g;
-            g.group = CastTo<std::string>(key, "a group's name", "str");
-            g.relight.plates = platesArgs.options();
-            g.relight.src = ToLight(lights[0]);
-            g.relight.dst = ToLight(lights[1]);
-            g.relight.method = lights.size() == 3
-                                   ? CastTo<std::string>(lights[2], "a group's method", "str")
-                                   : method;
-            g.relight.workingSpace = working;
-            g.relight.observer = py::str(observer).cast<std::string>();
-            if (!training.is_none())
-            {
-                g.relight.training = ToReflectances(training);
-            }
-            r.lightGroups.push_back(g);
+            g.relight.training = ToReflectances(change.training);
         }
+        groups.push_back(g);
     }
-    else if (r.look.empty() && !src.is_none())
+    return groups;
+}
+
+/// src and dst: one change of light for the whole image.
+jobs::RelightRequest ToRelight(const ChangeArgs& change)
+{
+    jobs::RelightRequest relight;
+    relight.plates = change.plates.options();
+    relight.plates.parsed();
+    if (!relight.plates.camera.empty())
     {
-        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
-        jobs::RelightRequest relight;
-        relight.plates = platesArgs.options();
-        relight.plates.parsed();
-        if (!relight.plates.camera.empty())
-        {
-            platesArgs.loadCamera();  // OSError when unreadable
-        }
-        relight.src = ToLight(src);
-        relight.dst = ToLight(dst);
-        relight.method = method;
-        relight.workingSpace = working;
-        relight.observer = py::str(observer).cast<std::string>();
-        if (!training.is_none())
-        {
-            relight.training = ToReflectances(training);
-        }
-        r.relight = relight;
+        change.plates.loadCamera();  // OSError when unreadable
     }
-    jobs::ApplyResult result;
+    relight.src = ToLight(change.src);
+    relight.dst = ToLight(change.dst);
+    relight.method = change.method;
+    relight.workingSpace = change.working;
+    relight.observer = py::str(change.observer).cast<std::string>();
+    if (!change.training.is_none())
     {
-        py::gil_scoped_release release;
-        result = jobs::ApplyImages(r, Warnings());
+        relight.training = ToReflectances(change.training);
     }
+    return relight;
+}
+
+/// The job, the GIL released.
+jobs::ApplyResult RunApply(const jobs::ApplyRequest& r)
+{
+    py::gil_scoped_release release;
+    return jobs::ApplyImages(r, Warnings());
+}
+
+/// The job's summary (FrameRunDict) and what it applied.
+py::dict ResultDict(const jobs::ApplyResult& result)
+{
     py::dict d = FrameRunDict(result.frames, result.skipped, result.failed, result.seconds);
     d["applied"] = result.applied;
     return d;
+}
+
+py::dict Apply(const py::object& input, const py::object& output,
+               const std::optional<std::string>& frames, const std::optional<std::string>& look,
+               const py::object& config, const std::optional<std::string>& colorspace,
+               const py::object& src, const py::object& dst, const std::string& method,
+               const std::string& working, const py::object& observer, const py::object& training,
+               const std::optional<std::string>& platesArg, const std::string& adaptation,
+               const py::object& camera, const std::string& cameraIdt, int threads,
+               bool skipExisting, bool keepGoing, const py::object& lightGroups,
+               const py::object& lightGroupLayers)
+{
+    // A render's light group carries its own light's cast: lit unless said.
+    const std::string plates =
+        platesArg.value_or(lightGroups.is_none() ? defaults::PLATES : defaults::LIGHT_GROUP_PLATES);
+    jobs::ApplyRequest r = FilesRequest(input, output, frames, look, config, colorspace, threads,
+                                        skipExisting, keepGoing);
+    const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
+    const ChangeArgs change{src, dst, method, working, observer, training, platesArgs};
+    RefuseConflicts(r, change, platesArg.has_value(), lightGroups);
+    r.lightGroupLayers = ToLightGroupLayers(lightGroupLayers);
+    if (r.look.empty() && !lightGroups.is_none())
+    {
+        r.lightGroups = ToLightGroups(lightGroups, change);
+    }
+    else if (r.look.empty() && !src.is_none())
+    {
+        r.relight = ToRelight(change);
+    }
+    return ResultDict(RunApply(r));
 }
 }  // namespace
 

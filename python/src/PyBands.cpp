@@ -72,9 +72,9 @@ py::dict Tables(const py::object& bandsArg, const py::object& observerArg,
     j["remittances"] = remittances;
     return j;
 }
-}  // namespace
 
-void AddBands(py::module_& m)
+/// bandlight.BandSet.
+void AddBandSetClass(py::module_& m)
 {
     py::class_<BandSet>(m, "BandSet", R"doc(
 An ordered set of wavelength bands [min_nm, max_nm), validated: edges
@@ -137,7 +137,11 @@ means the lecture's VB [400, 500), VG [500, 600), VR [600, 700).
              "\"400,500,600,700\"-style edges, as --bands takes them.")
         .def("__len__", &BandSet::size)
         .def("__repr__", [](const BandSet& s) { return "BandSet('" + s.describe() + "')"; });
+}
 
+/// Band means of lights and of surfaces.
+void AddBandMeans(py::module_& m)
+{
     m.def(
         "illuminant_bands",
         [](const py::object& illuminant, const py::object& bands, const std::string& rule)
@@ -180,6 +184,12 @@ Remittance band means (O_B, O_G, O_R, ...), raw (not normalised, so 0 <= O <= 1)
 A Spectrum gives shape (bands,); a test-colour name or file ("TCS", "chart.sp")
 or a sequence of Spectrum gives one row per surface, (N, bands).
 )doc");
+}
+
+/// The matching-function band matrices, the band <-> working-space matrices and
+/// their conditioning.
+void AddBandMatrices(py::module_& m)
+{
     m.def(
         "matching_band_matrix",
         [](const py::object& bands, const std::string& set, const py::object& observer,
@@ -256,6 +266,11 @@ or a singular matrix.
         "2-norm condition number sigma_max / sigma_min of a matrix (inf if singular).\n"
         "Band methods refuse band sets above MAX_BAND_CONDITION.");
     m.attr("MAX_BAND_CONDITION") = MAX_BAND_CONDITION;
+}
+
+/// tables(): the lecture's three tables, as `bandlight tables --json` prints them.
+void AddTables(py::module_& m)
+{
     m.def("tables", &Tables, py::arg("bands") = py::none(), py::kw_only(),
           py::arg("observer") = defaults::OBSERVER, py::arg("rule") = defaults::BAND_RULE, R"doc(
 The lecture's three tables, as ``bandlight tables --json`` prints them: a dict
@@ -263,6 +278,15 @@ with "bands", "observer", "rule", "matching_functions" (rows summing to 1, CIE
 xyz and EBU RGB), "condition_number", "illuminants" (band means, largest = 1,
 for A, C, D50, D55, D65, D75, E, F1-F12) and "remittances" (TCS01-TCS15).
 )doc");
+}
+}  // namespace
+
+void AddBands(py::module_& m)
+{
+    AddBandSetClass(m);
+    AddBandMeans(m);
+    AddBandMatrices(m);
+    AddTables(m);
 }
 
 }  // namespace bandlight::python

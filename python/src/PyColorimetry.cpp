@@ -151,9 +151,9 @@ py::object Integrate(const PyXyzIntegrator& self, const py::object& remittances)
     }
     return std::move(out);
 }
-}  // namespace
 
-void AddColorimetry(py::module_& m)
+/// xyz(): CIE XYZ of a light, or of surfaces under it, as `bandlight xyz`.
+void AddXyz(py::module_& m)
 {
     m.def(
         "xyz",
@@ -184,7 +184,11 @@ one row per surface, in order, shape (N, 3). Remittances are extended at
 their ends where they stop short of the illuminant's grid.
 observer: "1931" or "1964".
 )doc");
+}
 
+/// bandlight.XyzIntegrator: the fast path for many remittances under one light.
+void AddXyzIntegrator(py::module_& m)
+{
     py::class_<PyXyzIntegrator>(m, "XyzIntegrator", R"doc(
 Precomputed weights w_k(lambda) = k * S(lambda) * cmf_k(lambda) * step for one
 illuminant and observer, so that a surface's XYZ (white reflector Y = 100) is
@@ -243,7 +247,11 @@ integrated with the GIL released.
                  return "<XyzIntegrator '" + OneLine(s.illuminant, 80) + "', " +
                         ObserverName(s.observer) + ">";
              });
+}
 
+/// Conversions between XYZ, xyY and CIELAB.
+void AddColourConversions(py::module_& m)
+{
     m.def(
         "xyz_to_xyy",
         [](const py::object& xyz)
@@ -274,6 +282,11 @@ integrated with the GIL released.
             return MapPairs(c, w, [](const Vec3& v, const Vec3& wp) { return LabToXyz(v, wp); });
         },
         py::arg("lab"), py::arg("white"), "XYZ of CIELAB colours (..., 3) relative to white.");
+}
+
+/// Colour differences of CIELAB pairs.
+void AddColourDifferences(py::module_& m)
+{
     m.def(
         "delta_e76",
         [](const py::object& lab1, const py::object& lab2)
@@ -298,6 +311,11 @@ CIEDE2000 (CIE 142-2001, with the notes of Sharma, Wu & Dalal 2005) of
 CIELAB colour pairs (..., 3) broadcast together: a float for one pair, else
 an array of shape (...). Agrees with all 34 pairs of Sharma's table to 5e-5.
 )doc");
+}
+
+/// What a light is: its CCT and Duv, its colour rendering.
+void AddLightQuality(py::module_& m)
+{
     m.def(
         "cct",
         [](const py::object& xyz) -> py::object
@@ -334,6 +352,11 @@ The reference is a Planckian radiator below 5000 K and CIE daylight from
 5000 K on; outside_duv_tolerance is |Duv| > 5.4e-3, where CIE 13.3 does not
 consider Ra meaningful. Raises ValueError for a CCT outside 1000-25000 K.
 )doc");
+}
+
+/// Chromatic adaptation between two whites.
+void AddChromaticAdaptation(py::module_& m)
+{
     m.def(
         "adaptation_matrix",
         [](const py::object& src, const py::object& dst, const std::string& method)
@@ -347,6 +370,11 @@ The 3x3 that maps XYZ seen under src_white to the corresponding XYZ under
 dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
 "bradford", "cat02" or "sharp". Whites on any common scale.
 )doc");
+}
+
+/// The built-in RGB spaces and their matrices.
+void AddRgbSpaces(py::module_& m)
+{
     m.def(
         "rgb_spaces",
         []
@@ -381,6 +409,18 @@ dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
          "white with Y = 1. space: a name or alias (" +
          RgbSpaceChoices() + "; aliases such as \"ap1\" and \"lin-rec709\").")
             .c_str());
+}
+}  // namespace
+
+void AddColorimetry(py::module_& m)
+{
+    AddXyz(m);
+    AddXyzIntegrator(m);
+    AddColourConversions(m);
+    AddColourDifferences(m);
+    AddLightQuality(m);
+    AddChromaticAdaptation(m);
+    AddRgbSpaces(m);
 }
 
 }  // namespace bandlight::python

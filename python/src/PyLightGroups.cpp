@@ -38,19 +38,44 @@ F32 RgbArray(const py::handle& arg, const std::string& what)
     return a;
 }
 
-py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py::object& beauty,
-                       const std::string& method, const std::string& working,
-                       const py::object& observer, const py::object& training,
-                       const std::string& plates, const std::string& adaptation,
-                       const py::object& camera, const std::string& cameraIdt, int threadsArg)
+/// The groups' layers and the beauty, checked: RGB arrays of one shape.
+struct GroupImages
 {
-    const int threads = ToThreads(threadsArg);
+    std::vector<std::string> names;  ///< in the dict's order
+    std::vector<F32> arrays;         ///< one per name
+    std::optional<F32> beauty;       ///< none: the groups' sum
+    std::vector<py::ssize_t> shape;  ///< every array's
+    size_t count = 0;                ///< pixels
+    long width = 0;  ///< the second-to-last dimension; fewer than 3 dimensions are one row
+    long height = 0;
+
+    /// Floats per pixel of the job's buffer: the beauty's R, G, B, then each
+    /// group's.
+    size_t channels() const { return 3 + 3 * names.size(); }
+};
+
+/// What every change of light shares: the keywords after `changes`.
+struct ChangeArgs
+{
+    std::string method;
+    std::string working;
+    py::object observer;
+    py::object training;
+    PlatesArgs plates;
+    int threads = 0;
+};
+
+/// `groups` in the dict's order and `beauty`, each an RGB array of the first
+/// group's shape.
+GroupImages ToGroupImages(const py::dict& groups, const py::object& beauty)
+{
     if (groups.empty())
     {
         throw Exception("groups is empty: give {name: array of R, G, B}");
     }
-    std::vector<std::string> names;
-    std::vector<F32> arrays;
+    GroupImages images;
+    std::vector<std::string>& names = images.names;
+    std::vector<F32>& arrays = images.arrays;
     for (const auto& [key, value] : groups)
     {
         names.push_back(CastTo<std::string>(key, "a group's name", "str"));
@@ -63,23 +88,27 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
         }
     }
     const F32& first = arrays.front();
-    const std::vector<py::ssize_t> shape(first.shape(), first.shape() + first.ndim());
-    const size_t count = size_t(first.size()) / 3;
-    const long width = first.ndim() >= 3 ? long(shape[shape.size() - 2]) : long(count);
-    const long height = width > 0 ? long(count) / width : 0;
-    std::optional<F32> beautyIn;
+    images.shape.assign(first.shape(), first.shape() + first.ndim());
+    images.count = size_t(first.size()) / 3;
+    images.width =
+        first.ndim() >= 3 ? long(images.shape[images.shape.size() - 2]) : long(images.count);
+    images.height = images.width > 0 ? long(images.count) / images.width : 0;
     if (!beauty.is_none())
     {
-        beautyIn = RgbArray(beauty, "beauty");
-        if (Shape(*beautyIn) != Shape(first))
+        images.beauty = RgbArray(beauty, "beauty");
+        if (Shape(*images.beauty) != Shape(first))
         {
-            throw Exception("beauty has shape " + Shape(*beautyIn) + ", the groups " +
+            throw Exception("beauty has shape " + Shape(*images.beauty) + ", the groups " +
                             Shape(first));
         }
     }
+    return images;
+}
 
-    // The works: one relighter per change; a group relit to its own light
-    // is carried exactly.
+/// The job's buffer as light groups: the beauty in channels 0-2, group g in
+/// 3 + 3g to 5 + 3g, each named as given.
+jobs::LightGroupLayout BufferLayout(const std::vector<std::string>& names)
+{
     jobs::LightGroupLayout layout;
     layout.beauty[0] = 0;
     layout.beauty[1] = 1;
@@ -96,8 +125,17 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
         }
         layout.groups.push_back(l);
     }
+    return layout;
+}
+
+/// The works: one relighter per change; a group relit to its own light is
+/// carried exactly.
+std::map<std::string, jobs::LightGroupWork> ToWorks(const py::dict& changes,
+                                                    const jobs::LightGroupLayout& layout,
+                                                    const std::vector<std::string>& names,
+                                                    const ChangeArgs& change)
+{
     std::map<std::string, jobs::LightGroupWork> works;
-    std::string applied;
     for (const auto& [key, value] : changes)
     {
         const std::string name = CastTo<std::string>(key, "a change's group", "str");
@@ -119,19 +157,26 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
         }
         const Light from = ToLight(lights[0]);
         const Light to = ToLight(lights[1]);
-        const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
-        const MethodSpec spec = ToMethod(method, training, platesArgs);
+        const MethodSpec spec = ToMethod(change.method, change.training, change.plates);
         if (from.spectrum.sameGrid(to.spectrum) && from.spectrum.values() == to.spectrum.values())
         {
             continue;
         }
-        const auto relighter = std::make_shared<Relighter>(from, to, spec, FindRgbSpace(working),
-                                                           ToObserver(observer));
-        works[name] =
-            jobs::RgbWork([relighter](float* p, size_t n) { relighter->apply(p, n, 1); }, threads);
+        const auto relighter = std::make_shared<Relighter>(
+            from, to, spec, FindRgbSpace(change.working), ToObserver(change.observer));
+        works[name] = jobs::RgbWork([relighter](float* p, size_t n) { relighter->apply(p, n, 1); },
+                                    change.threads);
     }
+    return works;
+}
 
-    const size_t channels = 3 + 3 * names.size();
+/// The job's buffer (BufferLayout): per pixel the beauty (as given, or the
+/// groups' sum), then each group's R, G, B.
+std::vector<float> Interleave(const GroupImages& images)
+{
+    const std::vector<F32>& arrays = images.arrays;
+    const size_t count = images.count;
+    const size_t channels = images.channels();
     std::vector<float> buffer(count * channels);
     for (size_t g = 0; g < arrays.size(); ++g)
     {
@@ -151,16 +196,31 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
                 sum += buffer[p * channels + 3 + 3 * g + size_t(c)];
             }
             buffer[p * channels + size_t(c)] =
-                beautyIn ? beautyIn->data()[3 * p + size_t(c)] : float(sum);
+                images.beauty ? images.beauty->data()[3 * p + size_t(c)] : float(sum);
         }
     }
-    {
-        py::gil_scoped_release release;
-        jobs::RelightLightGroups(layout, works, buffer.data(), width, height, int(channels),
-                                 "light groups");
-    }
+    return buffer;
+}
+
+/// The groups relit in `buffer` and the beauty rebuilt, the GIL released.
+void RelightBuffer(const jobs::LightGroupLayout& layout,
+                   const std::map<std::string, jobs::LightGroupWork>& works,
+                   const GroupImages& images, std::vector<float>& buffer)
+{
+    py::gil_scoped_release release;
+    jobs::RelightLightGroups(layout, works, buffer.data(), images.width, images.height,
+                             int(images.channels()), "light groups");
+}
+
+/// {"beauty": array, "groups": {name: array}} from the relit buffer, each
+/// array of the groups' shape.
+py::dict ResultDict(const GroupImages& images, const std::vector<float>& buffer)
+{
+    const std::vector<py::ssize_t>& shape = images.shape;
+    const size_t count = images.count;
+    const size_t channels = images.channels();
     py::dict relit;
-    for (size_t g = 0; g < names.size(); ++g)
+    for (size_t g = 0; g < images.names.size(); ++g)
     {
         py::array_t<float> a(shape);
         float* dst = a.mutable_data();
@@ -168,7 +228,7 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
         {
             std::copy_n(&buffer[p * channels + 3 + 3 * g], 3, dst + 3 * p);
         }
-        relit[py::str(names[g])] = a;
+        relit[py::str(images.names[g])] = a;
     }
     py::array_t<float> newBeauty(shape);
     float* dst = newBeauty.mutable_data();
@@ -180,6 +240,24 @@ py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py
     out["beauty"] = newBeauty;
     out["groups"] = relit;
     return out;
+}
+
+py::dict RelightGroups(const py::dict& groups, const py::dict& changes, const py::object& beauty,
+                       const std::string& method, const std::string& working,
+                       const py::object& observer, const py::object& training,
+                       const std::string& plates, const std::string& adaptation,
+                       const py::object& camera, const std::string& cameraIdt, int threadsArg)
+{
+    const int threads = ToThreads(threadsArg);
+    const GroupImages images = ToGroupImages(groups, beauty);
+    const jobs::LightGroupLayout layout = BufferLayout(images.names);
+    const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
+    const ChangeArgs change{method, working, observer, training, platesArgs, threads};
+    const std::map<std::string, jobs::LightGroupWork> works =
+        ToWorks(changes, layout, images.names, change);
+    std::vector<float> buffer = Interleave(images);
+    RelightBuffer(layout, works, images, buffer);
+    return ResultDict(images, buffer);
 }
 }  // namespace
 

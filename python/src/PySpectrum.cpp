@@ -109,24 +109,11 @@ std::vector<NamedSpectrum> Named(const std::vector<Spectrum>& spectra,
     }
     return out;
 }
-}  // namespace
 
-void AddSpectrum(py::module_& m)
+/// The constructor, the name, and the grid and samples it is read by.
+void AddSpectrumData(py::class_<NamedSpectrum>& spectrum)
 {
-    py::class_<NamedSpectrum>(m, "Spectrum", R"doc(
-A spectrum sampled on a regular wavelength grid, with a name.
-
-Value i belongs to wavelength ``start + i * step`` (nm). Between samples the
-spectrum is the piecewise-linear interpolant; outside [start, end] it is
-zero. The unit of the values is the caller's: relative spectral power for
-illuminants, a factor in [0, 1] for remittances, a tristimulus weight for
-matching functions.
-
-``wavelengths`` and ``values`` are numpy arrays; ``values`` is a read-only
-view of the spectrum's own samples (copy it to change it, and make a new
-Spectrum). Spectra multiply (``illuminant * remittance``, resampled onto the
-left operand's grid) and scale (``2.0 * s``). They pickle.
-)doc")
+    spectrum
         .def(py::init(&MakeSpectrum), py::arg("wavelengths"), py::arg("values"),
              py::arg("name") = std::string(),
              "Spectrum from evenly spaced, increasing wavelengths (nm) and one value each.\n"
@@ -148,7 +135,13 @@ left operand's grid) and scale (``2.0 * s``). They pickle.
         .def_property_readonly(
             "end", [](const NamedSpectrum& s) { return s.spectrum.end(); }, "Last wavelength, nm.")
         .def("__len__", [](const NamedSpectrum& s) { return s.spectrum.size(); })
-        .def("__repr__", &Repr)
+        .def("__repr__", &Repr);
+}
+
+/// Values at wavelengths, other grids, integrals and band means.
+void AddSpectrumSampling(py::class_<NamedSpectrum>& spectrum)
+{
+    spectrum
         .def(
             "__call__",
             [](const NamedSpectrum& s, const py::handle& wavelength) -> py::object
@@ -214,7 +207,15 @@ left operand's grid) and scale (``2.0 * s``). They pickle.
             "Band means m_b = (1/width) * integral over band b, one per band, not\n"
             "normalised. bands: a BandSet, edges in nm or \"400,500,600,700\"; None is the\n"
             "lecture's VB/VG/VR. rule: \"lecture\" (the average of the samples with\n"
-            "a <= lambda < b, SPEC 1.2) or \"exact\" (the integral of the interpolant).")
+            "a <= lambda < b, SPEC 1.2) or \"exact\" (the integral of the interpolant).");
+}
+
+/// Arithmetic with numbers (the name kept) and with spectra (on the left
+/// operand's grid). Each operator's overloads are registered in this order,
+/// which is the order their docstrings list them in.
+void AddSpectrumArithmetic(py::class_<NamedSpectrum>& spectrum)
+{
+    spectrum
         .def(
             "__mul__",
             [](const NamedSpectrum& a, double k) {
@@ -302,23 +303,56 @@ left operand's grid) and scale (``2.0 * s``). They pickle.
                 return NamedSpectrum{"", a.spectrum - b.spectrum};
             },
             py::is_operator(), py::arg("other"),
-            "Pointwise difference on this spectrum's grid (the other resampled onto it).")
-        .def(py::pickle(
-            [](const NamedSpectrum& s) {
-                return py::make_tuple(s.name, s.spectrum.start(), s.spectrum.step(),
-                                      s.spectrum.values());
-            },
-            [](const py::tuple& t)
-            {
-                if (t.size() != 4)
-                {
-                    throw Exception("Spectrum: invalid pickled state");
-                }
-                return NamedSpectrum{t[0].cast<std::string>(),
-                                     Spectrum(t[1].cast<double>(), t[2].cast<double>(),
-                                              t[3].cast<std::vector<double>>())};
-            }));
+            "Pointwise difference on this spectrum's grid (the other resampled onto it).");
+}
 
+/// Pickling by name, grid and samples.
+void AddSpectrumPickling(py::class_<NamedSpectrum>& spectrum)
+{
+    spectrum.def(py::pickle(
+        [](const NamedSpectrum& s) {
+            return py::make_tuple(s.name, s.spectrum.start(), s.spectrum.step(),
+                                  s.spectrum.values());
+        },
+        [](const py::tuple& t)
+        {
+            if (t.size() != 4)
+            {
+                throw Exception("Spectrum: invalid pickled state");
+            }
+            return NamedSpectrum{t[0].cast<std::string>(),
+                                 Spectrum(t[1].cast<double>(), t[2].cast<double>(),
+                                          t[3].cast<std::vector<double>>())};
+        }));
+}
+
+/// bandlight.Spectrum.
+void AddSpectrumClass(py::module_& m)
+{
+    py::class_<NamedSpectrum> spectrum(m, "Spectrum", R"doc(
+A spectrum sampled on a regular wavelength grid, with a name.
+
+Value i belongs to wavelength ``start + i * step`` (nm). Between samples the
+spectrum is the piecewise-linear interpolant; outside [start, end] it is
+zero. The unit of the values is the caller's: relative spectral power for
+illuminants, a factor in [0, 1] for remittances, a tristimulus weight for
+matching functions.
+
+``wavelengths`` and ``values`` are numpy arrays; ``values`` is a read-only
+view of the spectrum's own samples (copy it to change it, and make a new
+Spectrum). Spectra multiply (``illuminant * remittance``, resampled onto the
+left operand's grid) and scale (``2.0 * s``). They pickle.
+)doc");
+    AddSpectrumData(spectrum);
+    AddSpectrumSampling(spectrum);
+    AddSpectrumArithmetic(spectrum);
+    AddSpectrumPickling(spectrum);
+}
+
+/// Built-in and computed lights: named illuminants, CIE daylight, Planckian
+/// radiators and the daylight basis.
+void AddIlluminants(py::module_& m)
+{
     m.def(
         "illuminant",
         [](const py::object& nameOrFile)
@@ -372,6 +406,11 @@ or a malformed file (file and line), OSError for a file that cannot be read.
                                   NamedSpectrum{"S2", b.s2});
         },
         "The CIE daylight basis (S0, S1, S2), 300-830 nm at 5 nm (CIE 15:2004 Table T.2).");
+}
+
+/// The observers' colour-matching functions.
+void AddMatchingFunctions(py::module_& m)
+{
     m.def(
         "cmf",
         [](const py::object& observer, const std::string& set)
@@ -392,6 +431,11 @@ Table T.5). set: "xyz" for x_bar, y_bar, z_bar as tabulated (y_bar peaks at
 1.0 at 555 nm), "ebu_rgb" for r_bar, g_bar, b_bar: x_bar y_bar z_bar
 converted to the EBU Tech 3213 primaries, D65 white.
 )doc");
+}
+
+/// Remittances by name or file, and spectrum files and text read whole.
+void AddSpectrumReaders(py::module_& m)
+{
     m.def(
         "reflectances", [](const py::object& nameOrFile) { return ToReflectances(nameOrFile); },
         py::arg("name_or_file") = defaults::REFLECTANCES, R"doc(
@@ -422,6 +466,15 @@ content, OSError for a file that cannot be read.
         { return ReadSpectraText(text, source); },
         py::arg("text"), py::arg("source") = defaults::TEXT_SOURCE,
         "The same as read_spectra for text in memory; source names it in error messages.");
+}
+}  // namespace
+
+void AddSpectrum(py::module_& m)
+{
+    AddSpectrumClass(m);
+    AddIlluminants(m);
+    AddMatchingFunctions(m);
+    AddSpectrumReaders(m);
 }
 
 }  // namespace bandlight::python

@@ -189,9 +189,9 @@ dtypes and layouts are converted to float32 first. Runs with the GIL
 released on ``threads`` threads (0: all cores). Any input, NaN and Inf
 included, gives a finite result (NaN and Inf are clamped to +-1e16 first).
 )doc";
-}  // namespace
 
-void AddTransforms(py::module_& m)
+/// The methods by name: the lists, their descriptions, their canonical and look names.
+void AddMethodNames(py::module_& m)
 {
     m.def("methods", &AllMethodNames,
           "Every image method `bandlight accuracy` compares: none, vonkries, bradford, cat02,\n"
@@ -220,7 +220,11 @@ void AddTransforms(py::module_& m)
         py::arg("method"), py::arg("src"), py::arg("dst"),
         "The name a config gives the look: \"<method>_<SRC>_to_<DST>\" (\"band3_A_to_D65\");\n"
         "its named transform is \"relight_\" + that.");
+}
 
+/// An illuminant change as a PyOpenColorIO transform and as a 3x3.
+void AddIlluminantChanges(py::module_& m)
+{
     m.def(
         "illuminant_change",
         [](const py::object& src, const py::object& dst, const std::string& method,
@@ -274,6 +278,11 @@ the linear methods (every method but upsample, rootpoly, rootpoly-camera and
 spectral). plates, adaptation: as illuminant_change (default balanced by
 CAT02: balance(dst) . M . balance(src)^-1; "lit" gives M itself).
 )doc");
+}
+
+/// The band space and the material tint as PyOpenColorIO transforms.
+void AddBandTransforms(py::module_& m)
+{
     m.def(
         "band_space",
         [](const py::object& bands, const std::string& working,
@@ -310,6 +319,11 @@ band space, band b times remittance[b] (R_diff), -> working RGB. remittance:
 one value per band in band order (VB, VG, VR: blue first), or a Spectrum
 whose band means are taken.
 )doc");
+}
+
+/// The 3x3 of a PyOpenColorIO processor.
+void AddMeasureMatrix(py::module_& m)
+{
     m.def(
         "measure_matrix",
         [](const OCIO::ConstProcessorRcPtr& processor)
@@ -317,7 +331,11 @@ whose band means are taken.
         py::arg("processor"),
         "The 3x3 a PyOpenColorIO.Processor applies, measured by running the basis\n"
         "vectors through it.");
+}
 
+/// bandlight.Relighter: an illuminant change applied to pixels in memory.
+void AddRelighterClass(py::module_& m)
+{
     py::class_<PyRelighter>(m, "Relighter", R"doc(
 An illuminant change ready to apply to pixels in memory (the C++ Relighter):
 one 3x3 for the linear methods, the native root polynomial for rootpoly, the
@@ -373,7 +391,11 @@ white-balanced plates, CAT02).
                         OneLine(r.dst, 80) + " in " + r.workingSpace + ", " + r.plates +
                         " plates>";
              });
+}
 
+/// relight(): a Relighter made and applied in one call.
+void AddRelight(py::module_& m)
+{
     m.def(
         "relight",
         [](const py::object& image, const py::object& src, const py::object& dst,
@@ -394,6 +416,17 @@ white-balanced plates, CAT02).
         (std::string("Relighter(src, dst, method, ...).apply(image, threads=threads, out=out):\n") +
          kApplyDoc)
             .c_str());
+}
+}  // namespace
+
+void AddTransforms(py::module_& m)
+{
+    AddMethodNames(m);
+    AddIlluminantChanges(m);
+    AddBandTransforms(m);
+    AddMeasureMatrix(m);
+    AddRelighterClass(m);
+    AddRelight(m);
 }
 
 }  // namespace bandlight::python
