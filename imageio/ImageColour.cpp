@@ -195,21 +195,17 @@ bool IsDisplayReferredFile(const std::string& path)
     return false;
 }
 
-ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& file,
-                                    const RgbSpace& fallback)
+namespace
 {
-    const auto get = [&](const char* key) -> const std::string*
-    {
-        const auto it = header.attributes.find(key);
-        return it == header.attributes.end() || it->second.empty() ? nullptr : &it->second;
-    };
-    const std::string* interop = get("colorInteropID");
-    const std::string* chroma = get("chromaticities");
-    const std::string* named = get("bandlight:colorSpace");
-    const std::string* oiio = get("oiio:ColorSpace");
-    const std::string what = file + ": ";
+
+/// What the tags of one image say so far: each tag read must agree with
+/// those before it, or the file contradicts itself.
+struct TagEvidence
+{
+    std::string what;  ///< "FILE: "
     std::optional<ImageEncoding> found;
-    const auto agree = [&](const ImageEncoding& e)
+
+    void agree(const ImageEncoding& e)
     {
         if (found && (found->srgbCurve != e.srgbCurve || found->gamma != e.gamma ||
                       !SameChromaticities(found->space.chromaticities, e.space.chromaticities)))
@@ -221,98 +217,135 @@ ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& 
         {
             found = e;
         }
-    };
-    if (interop)
-    {
-        const std::string id = Lower(*interop);
-        InteropId known;
-        const RgbSpace* space = SpaceOfInteropId(id, known);
-        if (!space)
-        {
-            throw ParameterError(what + "has colorInteropID '" + OneLine(*interop, 60) +
-                                 "', which bandlight does not convert; " + kOptions);
-        }
-        ImageEncoding e;
-        e.space = *space;
-        e.srgbCurve = known.srgbEncoded;
-        e.evidence = "colorInteropID " + known.id;
-        agree(e);
     }
-    if (chroma)
+};
+
+/// colorInteropID: the Color Interop Forum's name of the encoding.
+void ReadInteropId(const std::string& interop, TagEvidence& tags)
+{
+    const std::string id = Lower(interop);
+    InteropId known;
+    const RgbSpace* space = SpaceOfInteropId(id, known);
+    if (!space)
     {
-        const std::optional<Chromaticities> c = ParseChromaticities(*chroma);
-        if (!c)
-        {
-            throw Exception(what + "its chromaticities attribute '" + OneLine(*chroma, 80) +
-                            "' is not 8 numbers");
-        }
-        ImageEncoding e;
-        e.space = SpaceOf(*c);
-        e.evidence = "chromaticities";
-        // The attribute names primaries; the curve is the format's.
-        e.srgbCurve = found ? found->srgbCurve : IsDisplayReferred(header);
-        e.gamma = found ? found->gamma : 0.0;
-        agree(e);
+        throw ParameterError(tags.what + "has colorInteropID '" + OneLine(interop, 60) +
+                             "', which bandlight does not convert; " + kOptions);
     }
-    if (named)
+    ImageEncoding e;
+    e.space = *space;
+    e.srgbCurve = known.srgbEncoded;
+    e.evidence = "colorInteropID " + known.id;
+    tags.agree(e);
+}
+
+/// chromaticities: the primaries; the curve is what the tags before said,
+/// or the format's.
+void ReadChromaticities(const std::string& chroma, const ImageData& header, TagEvidence& tags)
+{
+    const std::optional<Chromaticities> c = ParseChromaticities(chroma);
+    if (!c)
     {
-        const RgbSpace* s = SpaceNamed(*named);
-        if (!s)
+        throw Exception(tags.what + "its chromaticities attribute '" + OneLine(chroma, 80) +
+                        "' is not 8 numbers");
+    }
+    ImageEncoding e;
+    e.space = SpaceOf(*c);
+    e.evidence = "chromaticities";
+    e.srgbCurve = tags.found ? tags.found->srgbCurve : IsDisplayReferred(header);
+    e.gamma = tags.found ? tags.found->gamma : 0.0;
+    tags.agree(e);
+}
+
+/// bandlight:colorSpace: the name bandlight wrote (OpenImageIO 2.4 drops
+/// oiio:ColorSpace from the EXRs it writes).
+void ReadBandlightName(const std::string& named, TagEvidence& tags)
+{
+    const RgbSpace* s = SpaceNamed(named);
+    if (!s)
+    {
+        throw ParameterError(tags.what + "has bandlight:colorSpace '" + OneLine(named, 60) +
+                             "': not colour bandlight converts; " + kOptions);
+    }
+    ImageEncoding e;
+    e.space = *s;
+    e.evidence = "bandlight:colorSpace";
+    tags.agree(e);
+}
+
+/// oiio:ColorSpace, read only when nothing else spoke: OpenImageIO's own
+/// guess from the format (sRGB, a PNG gamma, "Linear" for every EXR).
+std::optional<ImageEncoding> ReadOiioColorSpace(const std::string& oiio, const ImageData& header,
+                                                const std::string& what)
+{
+    const std::string v = Lower(oiio);
+    ImageEncoding e;
+    e.evidence = "oiio:ColorSpace " + oiio;
+    double gamma = 0.0;
+    char tail = 0;
+    if (v == "srgb" || v == "srgb_rec709_scene")
+    {
+        e.space = FindRgbSpace("rec709");
+        e.srgbCurve = true;
+        return e;
+    }
+    if (std::sscanf(v.c_str(), "gamma%lf%c", &gamma, &tail) == 1 && gamma >= 0.1 && gamma <= 10.0)
+    {
+        // PNG's gAMA chunk as OpenImageIO reports it: Rec.709 primaries.
+        e.space = FindRgbSpace("rec709");
+        e.gamma = gamma;
+        return e;
+    }
+    if (v == "linear" || v == "scene_linear" || v == "lin_srgb")
+    {
+        // OpenImageIO calls every EXR "Linear": the primaries are not
+        // said. Integer formats without primaries are Rec.709 (the sRGB
+        // chunk's and TIFF's default).
+        if (IntegerChannels(header))
         {
-            throw ParameterError(what + "has bandlight:colorSpace '" + OneLine(*named, 60) +
-                                 "': not colour bandlight converts; " + kOptions);
+            e.space = FindRgbSpace("rec709");
+            return e;
         }
-        ImageEncoding e;
+        return std::nullopt;
+    }
+    if (const RgbSpace* s = SpaceNamed(oiio))
+    {
         e.space = *s;
-        e.evidence = "bandlight:colorSpace";
-        agree(e);
+        return e;
     }
-    if (oiio && !found)
+    throw ParameterError(what + "has oiio:ColorSpace '" + OneLine(oiio, 60) +
+                         "', an encoding bandlight does not convert; " + kOptions);
+}
+
+}  // namespace
+
+ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& file,
+                                    const RgbSpace& fallback)
+{
+    const auto get = [&](const char* key) -> const std::string*
     {
-        const std::string v = Lower(*oiio);
-        ImageEncoding e;
-        e.evidence = "oiio:ColorSpace " + *oiio;
-        double gamma = 0.0;
-        char tail = 0;
-        if (v == "srgb" || v == "srgb_rec709_scene")
-        {
-            e.space = FindRgbSpace("rec709");
-            e.srgbCurve = true;
-            found = e;
-        }
-        else if (std::sscanf(v.c_str(), "gamma%lf%c", &gamma, &tail) == 1 && gamma >= 0.1 &&
-                 gamma <= 10.0)
-        {
-            // PNG's gAMA chunk as OpenImageIO reports it: Rec.709 primaries.
-            e.space = FindRgbSpace("rec709");
-            e.gamma = gamma;
-            found = e;
-        }
-        else if (v == "linear" || v == "scene_linear" || v == "lin_srgb")
-        {
-            // OpenImageIO calls every EXR "Linear": the primaries are not
-            // said. Integer formats without primaries are Rec.709 (the sRGB
-            // chunk's and TIFF's default).
-            if (IntegerChannels(header))
-            {
-                e.space = FindRgbSpace("rec709");
-                found = e;
-            }
-        }
-        else if (const RgbSpace* s = SpaceNamed(*oiio))
-        {
-            e.space = *s;
-            found = e;
-        }
-        else
-        {
-            throw ParameterError(what + "has oiio:ColorSpace '" + OneLine(*oiio, 60) +
-                                 "', an encoding bandlight does not convert; " + kOptions);
-        }
+        const auto it = header.attributes.find(key);
+        return it == header.attributes.end() || it->second.empty() ? nullptr : &it->second;
+    };
+    TagEvidence tags{file + ": ", std::nullopt};
+    if (const std::string* interop = get("colorInteropID"))
+    {
+        ReadInteropId(*interop, tags);
     }
-    if (found)
+    if (const std::string* chroma = get("chromaticities"))
     {
-        return *found;
+        ReadChromaticities(*chroma, header, tags);
+    }
+    if (const std::string* named = get("bandlight:colorSpace"))
+    {
+        ReadBandlightName(*named, tags);
+    }
+    if (const std::string* oiio = get("oiio:ColorSpace"); oiio && !tags.found)
+    {
+        tags.found = ReadOiioColorSpace(*oiio, header, tags.what);
+    }
+    if (tags.found)
+    {
+        return *tags.found;
     }
     if (IsDisplayReferred(header))
     {

@@ -314,45 +314,71 @@ void CheckFrameSetPaths(const FrameSetRequest& r)
     plan.check();
 }
 
-FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
-                     const std::function<void(const std::string& in, const std::string& out)>& one)
+namespace
 {
-    FrameRun run;
-    if (r.frames.empty())
+
+using FrameWork = std::function<void(const std::string& in, const std::string& out)>;
+
+/// What became of one frame of a set.
+struct FrameOutcome
+{
+    enum class State
     {
-        if (HasFramePattern(r.input))
-        {
-            throw ParameterError("'" + OneLine(r.input, 200) +
-                                 "' is a frame pattern: give {frames=}FIRST-LAST");
-        }
-        CheckFrameSetPaths(r);
-        if (r.mayReplaceInput && SameFile(r.input, r.output))
-        {
-            reporter.note(ShowPath(r.output) + " is the input: it is replaced by the result");
-        }
-        one(r.input, r.output);
-        run.frames = 1;
-        return run;
-    }
-    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
+        NOT_RUN,  ///< left when an earlier failure stopped the set
+        DONE,
+        SKIPPED,  ///< its output exists (--skip-existing)
+        FAILED
+    };
+    State state = State::NOT_RUN;
+    std::exception_ptr error;
+};
+
+const char* StateText(FrameOutcome::State state)
+{
+    switch (state)
     {
-        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+    case FrameOutcome::State::DONE:
+        return "done";
+    case FrameOutcome::State::SKIPPED:
+        return "skipped (exists)";
+    case FrameOutcome::State::FAILED:
+        return "failed";
+    case FrameOutcome::State::NOT_RUN:
+        break;
     }
-    const std::vector<int> frames = ParseFrameRange(r.frames);
+    return "not run";
+}
+
+/// One image, no frame set: checked, then worked.
+FrameRun RunSingleImage(const FrameSetRequest& r, Reporter& reporter, const FrameWork& one)
+{
+    if (HasFramePattern(r.input))
+    {
+        throw ParameterError("'" + OneLine(r.input, 200) +
+                             "' is a frame pattern: give {frames=}FIRST-LAST");
+    }
     CheckFrameSetPaths(r);
-    const auto t0 = std::chrono::steady_clock::now();
-    // Frames in flight: each reads, works and writes on its own thread, so
-    // one frame's reading and writing overlap another's; as many as there
-    // are cores (at most 4), fewer when their pixels would not fit in half
-    // the machine's memory.
-    const size_t inFlight = std::min(
-        frames.size(), r.inFlight > 0 ? size_t(r.inFlight)
-                                      : FramesInFlight(ExpandFramePattern(r.input, frames[0])));
+    if (r.mayReplaceInput && SameFile(r.input, r.output))
+    {
+        reporter.note(ShowPath(r.output) + " is the input: it is replaced by the result");
+    }
+    one(r.input, r.output);
+    FrameRun run;
+    run.frames = 1;
+    return run;
+}
+
+/// Runs the frames, `inFlight` at once: each reads, works and writes on its
+/// own thread, so one frame's reading and writing overlap another's. A
+/// failure stops the frames not yet started unless `keepGoing`.
+std::vector<FrameOutcome> RunFrames(const FrameSetRequest& r, Reporter& reporter,
+                                    const FrameWork& one, const std::vector<int>& frames,
+                                    size_t inFlight)
+{
     std::mutex mu;
     size_t next = 0, finished = 0;
     bool stop = false;
-    std::vector<std::exception_ptr> errors(frames.size());
-    std::vector<std::string> states(frames.size());
+    std::vector<FrameOutcome> outcomes(frames.size());
     const auto worker = [&]
     {
         for (;;)
@@ -368,10 +394,11 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
             }
             const int f = frames[i];
             const std::string out = ExpandFramePattern(r.output, f);
-            std::string state = "done";
+            FrameOutcome o;
+            o.state = FrameOutcome::State::DONE;
             if (r.skipExisting && IsFinishedFrame(out))
             {
-                state = "skipped (exists)";
+                o.state = FrameOutcome::State::SKIPPED;
             }
             else
             {
@@ -381,15 +408,15 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
                 }
                 catch (const std::exception& e)
                 {
-                    errors[i] = std::current_exception();
-                    state = "failed";
+                    o.error = std::current_exception();
+                    o.state = FrameOutcome::State::FAILED;
                 }
             }
             std::lock_guard<std::mutex> lock(mu);
-            states[i] = state;
-            stop = stop || (state == "failed" && !r.keepGoing);
+            outcomes[i] = o;
+            stop = stop || (o.state == FrameOutcome::State::FAILED && !r.keepGoing);
             ++finished;
-            reporter.progress("frame " + std::to_string(f) + " " + state + " (" +
+            reporter.progress("frame " + std::to_string(f) + " " + StateText(o.state) + " (" +
                                   std::to_string(finished) + " of " +
                                   std::to_string(frames.size()) + ")",
                               double(finished) / double(frames.size()));
@@ -405,25 +432,34 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
     {
         t.join();
     }
+    return outcomes;
+}
+
+/// Counts the outcomes into `run`. Without `keepGoing` the first failing
+/// frame, in order, is thrown again; with it, each failure is listed.
+void Tally(const std::vector<int>& frames, const std::vector<FrameOutcome>& outcomes,
+           bool keepGoing, FrameRun& run)
+{
     for (size_t i = 0; i < frames.size(); ++i)
     {
-        if (states[i] == "done")
+        const FrameOutcome& o = outcomes[i];
+        if (o.state == FrameOutcome::State::DONE)
         {
             ++run.frames;
         }
-        else if (states[i] == "skipped (exists)")
+        else if (o.state == FrameOutcome::State::SKIPPED)
         {
             ++run.skipped;
         }
-        else if (errors[i])
+        else if (o.error)
         {
-            if (!r.keepGoing)
+            if (!keepGoing)
             {
-                std::rethrow_exception(errors[i]);  // the first failing frame, in order
+                std::rethrow_exception(o.error);
             }
             try
             {
-                std::rethrow_exception(errors[i]);
+                std::rethrow_exception(o.error);
             }
             catch (const std::exception& e)
             {
@@ -431,6 +467,31 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter,
             }
         }
     }
+}
+
+}  // namespace
+
+FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter, const FrameWork& one)
+{
+    if (r.frames.empty())
+    {
+        return RunSingleImage(r, reporter, one);
+    }
+    if (!HasFramePattern(r.input) || !HasFramePattern(r.output))
+    {
+        throw ParameterError("{frames} needs frame patterns such as plate.####.exr for IN and OUT");
+    }
+    const std::vector<int> frames = ParseFrameRange(r.frames);
+    CheckFrameSetPaths(r);
+    const auto t0 = std::chrono::steady_clock::now();
+    // As many frames in flight as there are cores (at most 4), fewer when
+    // their pixels would not fit in half the machine's memory.
+    const size_t inFlight = std::min(
+        frames.size(), r.inFlight > 0 ? size_t(r.inFlight)
+                                      : FramesInFlight(ExpandFramePattern(r.input, frames[0])));
+    const std::vector<FrameOutcome> outcomes = RunFrames(r, reporter, one, frames, inFlight);
+    FrameRun run;
+    Tally(frames, outcomes, r.keepGoing, run);
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.sequence = true;
     return run;

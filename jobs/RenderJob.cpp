@@ -399,33 +399,24 @@ std::vector<std::string> RenderResult::written() const
     return all;
 }
 
-RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
+namespace
 {
-    (void)reporter;  // the render has nothing to note; the parameter keeps the jobs' shape
+
+/// The render itself, timed: one image, or with light groups one render
+/// per group, each planned on its own (lights sharing a spectrum share a
+/// term only inside a group), the beauty their sum.
+void RenderImages(const PreparedRender& prepared, GroupRender& groups, RenderResult& result)
+{
     const RenderRequest& r = prepared.request;
     const Scene& scene = prepared.scene;
-    RenderResult result;
-    result.explanation = prepared.explanation;
-    if (r.explain)
-    {
-        return result;
-    }
-    CheckRenderOutputs(prepared);
-    if (!r.out.empty())
-    {
-        CheckFiles(r, scene);
-    }
     const auto t0 = std::chrono::steady_clock::now();
     const auto render = [&](const Scene& s, const ScenePlan* plan, RenderCounters* counters)
     {
         return r.unplanned ? RenderSceneUnplanned(s, r.threads, counters)
                            : RenderScene(s, plan ? *plan : PlanScene(s), r.threads, counters);
     };
-    GroupRender groups;
     if (r.lightGroups)
     {
-        // One render per group, each planned on its own (lights sharing a
-        // spectrum share a term only inside a group); the beauty is their sum.
         groups.names = LightGroupNames(scene);
         for (const std::string& g : groups.names)
         {
@@ -445,84 +436,129 @@ RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
         result.image = render(scene, &prepared.plan, &result.counters);
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// --spectra: the scene's spectral radiance (per group with light groups;
+/// the groups' spectra kept in `groups`), rendered after the timed render.
+RenderedImage RenderSpectra(const PreparedRender& prepared, GroupRender& groups)
+{
+    const RenderRequest& r = prepared.request;
+    const auto radiance = [](Scene s)
+    {
+        s.settings.output = detail::SPECTRUM_OUTPUT;
+        return s;
+    };
+    if (r.lightGroups)
+    {
+        for (const std::string& g : groups.names)
+        {
+            const Scene s = radiance(SceneOfLightGroup(prepared.scene, g));
+            groups.spectra.push_back(RenderScene(s, PlanScene(s), r.threads));
+        }
+        return SumImages(groups.spectra);
+    }
+    const Scene s = radiance(prepared.scene);
+    return RenderScene(s, PlanScene(s), r.threads);
+}
+
+/// The RGB render (with its spectra and group layers when asked) and its
+/// sRGB preview, joining `outputs`.
+void WriteRgbRender(const PreparedRender& prepared, GroupRender& groups, RenderResult& result,
+                    OutputSet& outputs)
+{
+    const RenderRequest& r = prepared.request;
+    const RenderedImage& img = result.image;
+    const RgbSpace& space = FindRgbSpace(prepared.scene.settings.output);
+    std::optional<RenderedImage> spectra;
+    if (r.spectra)
+    {
+        spectra = RenderSpectra(prepared, groups);
+    }
+    if (r.lightGroups)
+    {
+        result.files.push_back(
+            WriteLightGroups(img, spectra ? &*spectra : nullptr, groups, r.out,
+                             LinearImageDescription(space, ColorSpaceName(space)), outputs));
+    }
+    else
+    {
+        result.files.push_back(WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
+    }
+    if (r.preview)
+    {
+        const std::string png = r.previewPath.empty() ? PreviewPath(r.out) : r.previewPath;
+        const std::vector<float> preview = SrgbPreview(img, space);
+        ImageDescription srgb;
+        srgb.colorSpace = "sRGB";
+        WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, srgb,
+                   PixelType::UINT8, &outputs);
+        result.files.push_back({png, "sRGB preview"});
+    }
+}
+
+/// --compare: the render against a spectral render of the same scene, as a
+/// ΔE00 map (EXR, and PNG with its scale) joining `outputs`.
+RenderComparison WriteComparison(const PreparedRender& prepared, const RenderedImage& img,
+                                 OutputSet& outputs)
+{
+    const RenderRequest& r = prepared.request;
+    const Scene& scene = prepared.scene;
+    Scene reference = scene;
+    reference.settings.mode = RenderSettings::Mode::SPECTRAL;
+    const RenderedImage ref = RenderScene(reference, PlanScene(reference), r.threads);
+    const DeltaEMap map = CompareWithReference(scene, img, ref);
+    RenderComparison c;
+    c.summary = map.summary();
+    c.exr = MapPath(r.out, ".exr");
+    c.png = MapPath(r.out, ".png");
+    std::ostringstream title;
+    title << "CIEDE2000 of the " << ModeName(scene.settings)
+          << " render against the spectral reference: mean " << Fixed(c.summary.mean, 2)
+          << ", p95 " << Fixed(c.summary.p95, 2) << ", max " << Fixed(c.summary.max, 2);
+    WriteDeltaEMap(map, c.exr, c.png, title.str(), {}, outputs);
+    return c;
+}
+
+}  // namespace
+
+RenderResult MakeRender(const PreparedRender& prepared, Reporter& reporter)
+{
+    (void)reporter;  // the render has nothing to note; the parameter keeps the jobs' shape
+    const RenderRequest& r = prepared.request;
+    const Scene& scene = prepared.scene;
+    RenderResult result;
+    result.explanation = prepared.explanation;
+    if (r.explain)
+    {
+        return result;
+    }
+    CheckRenderOutputs(prepared);
+    if (!r.out.empty())
+    {
+        CheckFiles(r, scene);
+    }
+    GroupRender groups;
+    RenderImages(prepared, groups, result);
     if (r.out.empty())
     {
         return result;
     }
-    const RenderedImage& img = result.image;
     // The render, its preview and the comparison's map are one set.
     OutputSet outputs;
     if (BandOutput(scene))
     {
         result.files.push_back(
-            r.lightGroups ? WriteLightGroups(img, nullptr, groups, r.out,
+            r.lightGroups ? WriteLightGroups(result.image, nullptr, groups, r.out,
                                              BandDescription(scene.settings.bands), outputs)
-                          : WriteBandValues(img, r.out, scene.settings.bands, outputs));
+                          : WriteBandValues(result.image, r.out, scene.settings.bands, outputs));
     }
     else
     {
-        const RgbSpace& space = FindRgbSpace(scene.settings.output);
-        std::optional<RenderedImage> spectra;
-        if (r.spectra)
-        {
-            const auto radiance = [](Scene s)
-            {
-                s.settings.output = detail::SPECTRUM_OUTPUT;
-                return s;
-            };
-            if (r.lightGroups)
-            {
-                for (const std::string& g : groups.names)
-                {
-                    const Scene s = radiance(SceneOfLightGroup(scene, g));
-                    groups.spectra.push_back(RenderScene(s, PlanScene(s), r.threads));
-                }
-                spectra = SumImages(groups.spectra);
-            }
-            else
-            {
-                const Scene s = radiance(scene);
-                spectra = RenderScene(s, PlanScene(s), r.threads);
-            }
-        }
-        if (r.lightGroups)
-        {
-            result.files.push_back(
-                WriteLightGroups(img, spectra ? &*spectra : nullptr, groups, r.out,
-                                 LinearImageDescription(space, ColorSpaceName(space)), outputs));
-        }
-        else
-        {
-            result.files.push_back(
-                WriteRgb(img, r.out, space, spectra ? &*spectra : nullptr, outputs));
-        }
-        if (r.preview)
-        {
-            const std::string png = r.previewPath.empty() ? PreviewPath(r.out) : r.previewPath;
-            const std::vector<float> preview = SrgbPreview(img, space);
-            ImageDescription srgb;
-            srgb.colorSpace = "sRGB";
-            WriteImage(png, preview.data(), img.width, img.height, 3, img.channelNames, srgb,
-                       PixelType::UINT8, &outputs);
-            result.files.push_back({png, "sRGB preview"});
-        }
+        WriteRgbRender(prepared, groups, result, outputs);
     }
     if (r.compare)
     {
-        Scene reference = scene;
-        reference.settings.mode = RenderSettings::Mode::SPECTRAL;
-        const RenderedImage ref = RenderScene(reference, PlanScene(reference), r.threads);
-        const DeltaEMap map = CompareWithReference(scene, img, ref);
-        RenderComparison c;
-        c.summary = map.summary();
-        c.exr = MapPath(r.out, ".exr");
-        c.png = MapPath(r.out, ".png");
-        std::ostringstream title;
-        title << "CIEDE2000 of the " << ModeName(scene.settings)
-              << " render against the spectral reference: mean " << Fixed(c.summary.mean, 2)
-              << ", p95 " << Fixed(c.summary.p95, 2) << ", max " << Fixed(c.summary.max, 2);
-        WriteDeltaEMap(map, c.exr, c.png, title.str(), {}, outputs);
-        result.comparison = c;
+        result.comparison = WriteComparison(prepared, result.image, outputs);
     }
     outputs.commit();
     return result;
