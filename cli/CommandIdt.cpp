@@ -125,9 +125,9 @@ void AddIdtCommand(CLI::App& app)
                     "Linear space the IDTs land in: " + RgbSpaceChoices())
         ->capture_default_str();
     cmd->add_option("--adaptation", r.adaptation,
-                    "Chromatic adaptation of the light's white to the working white: cat02 (as "
-                    "rawtoaces) or bradford")
-        ->check(CLI::IsMember({"cat02", "bradford"}))
+                    "Chromatic adaptation of the light's white to the working white: " +
+                        PlateAdaptationChoices() + " (cat02 as rawtoaces)")
+        ->check(CLI::IsMember(PlateAdaptationKeys()))
         ->capture_default_str();
     AddObserverOption(*cmd, r.observer);
     cmd->add_option("--training", r.training,

@@ -103,10 +103,11 @@ void AddSpectralCommand(CLI::App& app)
     cmd->add_option("--plates", s.plates.plates,
                     "balanced: white-balance the result from the light it shows to the working "
                     "white; lit: do not")
-        ->check(CLI::IsMember({"lit", "balanced"}, CLI::ignore_case))
+        ->check(CLI::IsMember(PlateConventionKeys(), CLI::ignore_case))
         ->capture_default_str();
-    cmd->add_option("--adaptation", s.plates.adaptation, "Balance with cat02 or bradford")
-        ->check(CLI::IsMember({"cat02", "bradford"}, CLI::ignore_case))
+    cmd->add_option("--adaptation", s.plates.adaptation,
+                    "Balance with one of " + PlateAdaptationChoices())
+        ->check(CLI::IsMember(PlateAdaptationKeys(), CLI::ignore_case))
         ->capture_default_str();
     AddObserverOption(*cmd, s.observer);
     cmd->add_option("--channel", o->channels,

@@ -9,6 +9,7 @@
 #include "cli/Diagnostics.h"
 #include "bandlight/jobs/Defaults.h"
 #include "bandlight/spectral/RgbSpaces.h"
+#include "bandlight/transforms/Plates.h"
 
 namespace bandlight::cli
 {
@@ -94,18 +95,38 @@ jobs::RelightRequest RelightOptions::relight(jobs::Reporter& reporter) const
     return r;
 }
 
+std::vector<std::string> PlateConventionKeys()
+{
+    std::vector<std::string> keys;
+    for (const PlateConventionEntry& e : PlateConventions())
+    {
+        keys.push_back(e.key);
+    }
+    return keys;
+}
+
+std::vector<std::string> PlateAdaptationKeys()
+{
+    std::vector<std::string> keys;
+    for (const AdaptationEntry& e : PlateAdaptations())
+    {
+        keys.push_back(e.key);
+    }
+    return keys;
+}
+
 void AddPlatesOptions(CLI::App& app, jobs::PlatesRequest& o, bool allowBoth)
 {
-    app.add_option("--plates", o.plates,
-                   std::string("What the images are: balanced (white-balanced to the working "
-                               "white, as every ACES IDT delivers them: the look keeps neutrals "
-                               "neutral and changes only the light's colour rendering) or lit "
-                               "(carrying the source light's cast, which the look removes)") +
-                       (allowBoth ? "; both: measure the two" : ""))
+    std::string plates = "What the images are:";
+    for (const PlateConventionEntry& e : PlateConventions())
+    {
+        plates += std::string(plates.back() == ':' ? " " : " or ") + e.key + " (" + e.help + ")";
+    }
+    app.add_option("--plates", o.plates, plates + (allowBoth ? "; both: measure the two" : ""))
         ->capture_default_str();
     app.add_option("--adaptation", o.adaptation,
-                   "Chromatic adaptation the balanced plates were balanced with: cat02 "
-                   "(rawtoaces) or bradford")
+                   "Chromatic adaptation the balanced plates were balanced with: " +
+                       PlateAdaptationChoices() + " (cat02 as rawtoaces)")
         ->capture_default_str();
     app.add_option(
         "--camera", o.camera,

@@ -46,6 +46,11 @@ CLI::Option* AddLutSizeOption(CLI::App& app, int& value, const std::string& help
 /// also takes "both" (accuracy measures the two conventions).
 void AddPlatesOptions(CLI::App& app, jobs::PlatesRequest& o, bool allowBoth = false);
 
+/// The plate conventions' and the plates' adaptations' keys, from their
+/// tables (transforms/Plates.h), for CLI11's IsMember checks.
+std::vector<std::string> PlateConventionKeys();
+std::vector<std::string> PlateAdaptationKeys();
+
 /// --from/--to/--method/--working-space and the plates: an illuminant
 /// change without a config, as the command takes it (the lights by name or
 /// file, resolved by relight()).

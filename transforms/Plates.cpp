@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "bandlight/transforms/Plates.h"
 
-#include <cstdio>
-
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 #include <Eigen/LU>
 
@@ -62,35 +61,80 @@ std::string Plates::describe(const std::string& workingSpaceName, const Vec3* gr
            NeutralClause(grey);
 }
 
+const std::vector<PlateConventionEntry>& PlateConventions()
+{
+    static const std::vector<PlateConventionEntry> table = {
+        {PlateConvention::LIT, "lit",
+         "carrying the source light's cast, which the look removes"},
+        {PlateConvention::BALANCED, "balanced",
+         "white-balanced to the working white, as every ACES IDT delivers them: the look keeps "
+         "neutrals neutral and changes only the light's colour rendering"},
+    };
+    return table;
+}
+
+const std::vector<AdaptationEntry>& PlateAdaptations()
+{
+    // CAT02 is what rawtoaces balances with; Bradford is common in camera
+    // vendors' IDTs and ICC profiles.
+    static const std::vector<AdaptationEntry> table = []
+    {
+        std::vector<AdaptationEntry> t;
+        for (const AdaptationMethod m : {AdaptationMethod::CAT02, AdaptationMethod::BRADFORD})
+        {
+            for (const AdaptationEntry& e : AdaptationMethods())
+            {
+                if (e.method == m)
+                {
+                    t.push_back(e);
+                }
+            }
+        }
+        return t;
+    }();
+    return table;
+}
+
+std::string PlateConventionChoices()
+{
+    std::string list;
+    for (const PlateConventionEntry& e : PlateConventions())
+    {
+        list += (list.empty() ? "" : ", ") + std::string(e.key);
+    }
+    return list;
+}
+
+std::string PlateAdaptationChoices()
+{
+    std::string list;
+    for (const AdaptationEntry& e : PlateAdaptations())
+    {
+        list += (list.empty() ? "" : ", ") + std::string(e.key);
+    }
+    return list;
+}
+
 Plates ParsePlates(const std::string& convention, const std::string& adaptation)
 {
     Plates p;
     const std::string c = Lower(convention);
-    if (c == "lit")
+    const auto conv = std::find_if(PlateConventions().begin(), PlateConventions().end(),
+                                   [&](const PlateConventionEntry& e) { return c == e.key; });
+    if (conv == PlateConventions().end())
     {
-        p.convention = PlateConvention::LIT;
+        throw Exception("unknown plates '" + convention + "' (" + PlateConventionChoices() + ")");
     }
-    else if (c == "balanced")
-    {
-        p.convention = PlateConvention::BALANCED;
-    }
-    else
-    {
-        throw Exception("unknown plates '" + convention + "' (lit, balanced)");
-    }
+    p.convention = conv->convention;
     const std::string a = Lower(adaptation);
-    if (a == "cat02")
+    const auto adapt = std::find_if(PlateAdaptations().begin(), PlateAdaptations().end(),
+                                    [&](const AdaptationEntry& e) { return a == e.key; });
+    if (adapt == PlateAdaptations().end())
     {
-        p.adaptation = AdaptationMethod::CAT02;
+        throw Exception("unknown adaptation '" + adaptation + "' (" + PlateAdaptationChoices() +
+                        ")");
     }
-    else if (a == "bradford")
-    {
-        p.adaptation = AdaptationMethod::BRADFORD;
-    }
-    else
-    {
-        throw Exception("unknown adaptation '" + adaptation + "' (cat02, bradford)");
-    }
+    p.adaptation = adapt->method;
     return p;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "bandlight/spectral/ChromaticAdaptation.h"
 #include "bandlight/spectral/Colorimetry.h"
@@ -49,7 +50,29 @@ struct Plates
     std::string describe(const std::string& workingSpaceName, const Vec3* grey = nullptr) const;
 };
 
-/// Parses --plates (lit, balanced) and --adaptation (cat02, bradford);
+/// One row of the plate-convention table: the convention, its name in
+/// options, files and reports, and what it means to a user (help texts).
+struct PlateConventionEntry
+{
+    PlateConvention convention;
+    const char* key;   ///< "balanced"
+    const char* help;  ///< "white-balanced to the working white, ..."
+};
+
+/// Every plate convention, in the order they are listed to users.
+const std::vector<PlateConventionEntry>& PlateConventions();
+
+/// The adaptations plates are balanced with (a part of AdaptationMethods()),
+/// in the order they are listed; the first is the default.
+const std::vector<AdaptationEntry>& PlateAdaptations();
+
+/// "balanced, lit": the conventions' keys, for help and errors.
+std::string PlateConventionChoices();
+
+/// "cat02, bradford": the plates' adaptations' keys, for help and errors.
+std::string PlateAdaptationChoices();
+
+/// Parses --plates and --adaptation from the tables above (any case);
 /// throws Exception naming the choices otherwise.
 Plates ParsePlates(const std::string& convention, const std::string& adaptation = defaults::ADAPTATION);
 
