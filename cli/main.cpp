@@ -49,9 +49,15 @@ void AddCommands(CLI::App& app)
 }
 
 /// CLI11 says only "A subcommand is required" for a mistyped command: name
-/// it, and the command it was likely meant to be.
+/// it, and the command it was likely meant to be. A command that was found
+/// and lacks a required option keeps CLI11's message ("--illuminant is
+/// required").
 std::string MissingCommand(const CLI::App& app, int argc, char** argv, const CLI::RequiredError& e)
 {
+    if (!app.get_subcommands().empty())
+    {
+        return e.what();
+    }
     std::string commands, nearest;
     size_t best = std::string::npos;
     for (const CLI::App* sub : app.get_subcommands({}))
