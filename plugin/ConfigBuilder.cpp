@@ -16,6 +16,7 @@
 
 #include "bandlight/plugin/ConfigReferences.h"
 #include "bandlight/plugin/SceneLinearEvidence.h"
+#include "bandlight/plugin/detail/ConfigParts.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/spectral/ChromaticAdaptation.h"
 #include "bandlight/spectral/Exception.h"
@@ -28,9 +29,14 @@ namespace bandlight
 namespace
 {
 
+using detail::AddInputSpaces;
+using detail::AsLutFile;
+using detail::IsV1;
+using detail::kLutFolder;
+using detail::SceneSpace;
+
 constexpr const char* kBandSpaceName = "Bands VB-VG-VR (lecture)";
 constexpr const char* kFamilyLooks = "bandlight";
-constexpr const char* kLutFolder = "luts";
 
 /// Linear RGB → CIE XYZ with a D65 white (Bradford when the space's white differs).
 Mat3 SpaceToXyzD65(const RgbSpace& src)
@@ -41,17 +47,6 @@ Mat3 SpaceToXyzD65(const RgbSpace& src)
                          ? Mat3::Identity()
                          : AdaptationMatrix(ws, d65, AdaptationMethod::BRADFORD);
     return cat * RgbToXyzMatrix(src.chromaticities);
-}
-
-OCIO::ColorSpaceRcPtr SceneSpace(const std::string& name, const std::string& family,
-                                 const std::string& description, const std::string& encoding)
-{
-    OCIO::ColorSpaceRcPtr cs = OCIO::ColorSpace::Create(OCIO::REFERENCE_SPACE_SCENE);
-    cs->setName(name.c_str());
-    cs->setFamily(family.c_str());
-    cs->setDescription(description.c_str());
-    cs->setEncoding(encoding.c_str());
-    return cs;
 }
 
 /// A transform taking the base config's scene_linear space to its reference,
@@ -73,27 +68,6 @@ OCIO::TransformRcPtr SceneLinearToReference(const OCIO::ConstColorSpaceRcPtr& sc
         return inv;
     }
     return nullptr;  // scene_linear is the reference itself
-}
-
-/// An OCIO v1 config cannot hold bandlight's guard (a v2 RangeTransform)
-/// inline, nor named transforms: its additions are CLF files the package
-/// carries, referenced by FileTransforms (which OCIO reads whatever the
-/// config's version), so the base keeps its v1 meaning exactly.
-bool IsV1(const OCIO::Config& config)
-{
-    return config.getMajorVersion() < 2;
-}
-
-/// `t` as a FileTransform of a CLF file the package carries (luts/<name>.clf).
-OCIO::TransformRcPtr AsLutFile(ConfigPackage& package, const std::string& name,
-                               const OCIO::GroupTransformRcPtr& t)
-{
-    const std::string file = SafeName(name) + ".clf";
-    package.lutFiles.emplace_back(std::string(kLutFolder) + "/" + file, t);
-    OCIO::FileTransformRcPtr f = OCIO::FileTransform::Create();
-    f->setSrc(file.c_str());
-    f->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-    return f;
 }
 
 void AddBandSpace(ConfigPackage& package, const RgbSpace& working, Observer observer,
@@ -201,46 +175,6 @@ void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& wo
                 config.addNamedTransform(nt);
             }
         }
-    }
-}
-
-/// The input colour spaces (camera IDTs), each to the config's reference:
-/// its matrix into its space, that space into the working space, then the
-/// working space to the reference (`workingToReference`, none when the
-/// working space is the reference). Each matrix is also a CLF file.
-void AddInputSpaces(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& working,
-                    const OCIO::ConstTransformRcPtr& workingToReference)
-{
-    OCIO::Config& config = *package.config;
-    for (const InputSpace& in : o.inputSpaces)
-    {
-        if (config.getColorSpace(in.name.c_str()))
-        {
-            throw Exception("the config already has a colour space named '" + in.name + "'");
-        }
-        OCIO::ColorSpaceRcPtr cs = SceneSpace(in.name, "Input", in.description, "scene-linear");
-        const Mat3 m = SpaceToSpace(FindRgbSpace(in.space), working) * in.toSpace;
-        OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
-        const OCIO::GroupTransformRcPtr matrix = GuardedMatrixTransform(m);
-        if (IsV1(config))
-        {
-            g->appendTransform(AsLutFile(package, in.name, matrix));
-        }
-        else
-        {
-            g->appendTransform(matrix);
-            OCIO::GroupTransformRcPtr file = GuardedMatrixTransform(in.toSpace);
-            file->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
-                                                      in.description.c_str());
-            package.lutFiles.emplace_back(
-                std::string(kLutFolder) + "/" + SafeName(in.name) + ".clf", file);
-        }
-        if (workingToReference)
-        {
-            g->appendTransform(workingToReference->createEditableCopy());
-        }
-        cs->setTransform(g, OCIO::COLORSPACE_DIR_TO_REFERENCE);
-        config.addColorSpace(cs);
     }
 }
 
@@ -421,7 +355,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
     config->setActiveViews("Standard, Raw");
 
     AddLooks(package, o, working, workingName);
-    AddInputSpaces(package, o, working, nullptr);
+    AddInputSpaces(package, o.inputSpaces, working, nullptr);
     if (!package.lutFiles.empty())
     {
         config->addSearchPath(kLutFolder);
@@ -737,7 +671,7 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions o, 
         AddBandSpace(package, working, o.observer, SceneLinearToReference(sceneLinear));
     }
     AddLooks(package, o, working, processSpace);
-    AddInputSpaces(package, o, working, SceneLinearToReference(sceneLinear));
+    AddInputSpaces(package, o.inputSpaces, working, SceneLinearToReference(sceneLinear));
     if (!package.lutFiles.empty())
     {
         config->addSearchPath(kLutFolder);

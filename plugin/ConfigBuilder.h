@@ -6,26 +6,13 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "bandlight/plugin/ConfigInputSpaces.h"
 #include "bandlight/plugin/OcioTransforms.h"
 #include "bandlight/spectral/AtomicFile.h"
 #include "bandlight/transforms/Defaults.h"
 
 namespace bandlight
 {
-
-/// An input colour space: camera RGB → a linear RGB space by a 3×3 (a
-/// camera's IDT, white-balance gains folded in). In a config it is an
-/// "Input" family, scene-linear colour space whose to-reference transform
-/// is the matrix followed by the way from `space` to the config's
-/// reference; its matrix is also written as a CLF file of its own
-/// (luts/<name>.clf, through OCIO's writer).
-struct InputSpace
-{
-    std::string name;
-    std::string description;
-    Mat3 toSpace = Mat3::Identity();
-    std::string space = "aces2065-1";  ///< the built-in RGB space the matrix lands in
-};
 
 /// What goes into a config: the working space, the lights and the methods.
 /// Every ordered pair of distinct lights gets one look per method, named

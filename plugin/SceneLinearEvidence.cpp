@@ -24,6 +24,7 @@ namespace
 struct Decoding
 {
     const char* name;
+    bool linear;  ///< no encoding at all
     std::function<double(double)> decode;
 };
 
@@ -35,18 +36,18 @@ double SignedPow(double v, double p)
 const std::vector<Decoding>& Decodings()
 {
     static const std::vector<Decoding> d = {
-        {"linear", [](double v) { return v; }},
-        {"the sRGB curve (IEC 61966-2-1)",
+        {"linear", true, [](double v) { return v; }},
+        {"the sRGB curve (IEC 61966-2-1)", false,
          [](double v)
          {
              const double a = std::abs(v);
              const double l = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
              return v < 0.0 ? -l : l;
          }},
-        {"gamma 2.2", [](double v) { return SignedPow(v, 2.2); }},
-        {"gamma 2.4 (BT.1886)", [](double v) { return SignedPow(v, 2.4); }},
-        {"gamma 2.6", [](double v) { return SignedPow(v, 2.6); }},
-        {"the BT.709 OETF",
+        {"gamma 2.2", false, [](double v) { return SignedPow(v, 2.2); }},
+        {"gamma 2.4 (BT.1886)", false, [](double v) { return SignedPow(v, 2.4); }},
+        {"gamma 2.6", false, [](double v) { return SignedPow(v, 2.6); }},
+        {"the BT.709 OETF", false,
          [](double v)
          {
              const double a = std::abs(v);
@@ -57,12 +58,27 @@ const std::vector<Decoding>& Decodings()
     return d;
 }
 
+/// The interchange roles, whose meaning OCIO defines.
+enum class InterchangeRole
+{
+    NONE,
+    DISPLAY,  ///< cie_xyz_d65_interchange: CIE XYZ with a D65 white
+    SCENE,    ///< aces_interchange: ACES2065-1 (AP0 primaries)
+};
+
+const char* RoleName(InterchangeRole role)
+{
+    return role == InterchangeRole::DISPLAY ? OCIO::ROLE_INTERCHANGE_DISPLAY
+                                            : OCIO::ROLE_INTERCHANGE_SCENE;
+}
+
 /// A standard target a colour space may hold: its matrix from primaries P.
 struct Target
 {
     std::string name;
     std::vector<std::string> keywords;  ///< lower-case words that name it
     std::function<std::vector<Mat3>(const RgbSpace&)> fromPrimaries;  ///< accepted matrices
+    InterchangeRole role;  ///< the interchange role whose space this target is, if any
 };
 
 Mat3 Adapt(const Vec3& from, const Vec3& to, AdaptationMethod m)
@@ -78,6 +94,7 @@ Vec3 White(const RgbSpace& s)
 std::vector<Target> Targets()
 {
     std::vector<Target> t;
+    const RgbSpace* ap0 = &FindRgbSpace("aces2065-1");
     for (const RgbSpace& target : BuiltinRgbSpaces())
     {
         const RgbSpace* tp = &target;
@@ -89,7 +106,8 @@ std::vector<Target> Targets()
                          return std::vector<Mat3>{
                              to * Adapt(White(p), White(*tp), AdaptationMethod::BRADFORD) * from,
                              to * Adapt(White(p), White(*tp), AdaptationMethod::CAT02) * from};
-                     }});
+                     },
+                     tp == ap0 ? InterchangeRole::SCENE : InterchangeRole::NONE});
     }
     const auto xyz = [](const Vec3& white)
     {
@@ -100,11 +118,15 @@ std::vector<Target> Targets()
                                      Adapt(White(p), white, AdaptationMethod::CAT02) * from};
         };
     };
-    t.push_back({"CIE XYZ (D65 white)", {"xyz"}, xyz(WhiteXyz(0.3127, 0.3290))});
-    t.push_back({"CIE XYZ (equal-energy white)", {"xyz"}, xyz(Vec3(1.0, 1.0, 1.0))});
-    t.push_back({"CIE XYZ (the space's own white)", {"xyz"}, [](const RgbSpace& p) {
-                     return std::vector<Mat3>{RgbToXyzMatrix(p.chromaticities)};
-                 }});
+    t.push_back(
+        {"CIE XYZ (D65 white)", {"xyz"}, xyz(WhiteXyz(0.3127, 0.3290)), InterchangeRole::DISPLAY});
+    t.push_back(
+        {"CIE XYZ (equal-energy white)", {"xyz"}, xyz(Vec3(1.0, 1.0, 1.0)), InterchangeRole::NONE});
+    t.push_back({"CIE XYZ (the space's own white)",
+                 {"xyz"},
+                 [](const RgbSpace& p)
+                 { return std::vector<Mat3>{RgbToXyzMatrix(p.chromaticities)}; },
+                 InterchangeRole::NONE});
     return t;
 }
 
@@ -173,29 +195,21 @@ bool FitMatrix(const OCIO::ConstCPUProcessorRcPtr& cpu, const Decoding& d, Mat3&
            std::abs(m.determinant()) > 1e-6;
 }
 
-}  // namespace
-
-SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
+/// A colour space scene_linear is measured against.
+struct Candidate
 {
-    const OCIO::ConstColorSpaceRcPtr sceneLinear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
-    if (!sceneLinear)
-    {
-        throw Exception("the base config has no scene_linear role: looks need a process space");
-    }
-    const std::string slName = sceneLinear->getName();
-    const std::vector<Target> targets = Targets();
-    std::vector<Finding> findings;
+    OCIO::ConstColorSpaceRcPtr cs;
+    InterchangeRole role;  ///< the interchange role it was found through, if any
+};
 
-    // Candidate spaces: the interchange roles first, then every colour space.
-    struct Candidate
-    {
-        OCIO::ConstColorSpaceRcPtr cs;
-        std::string role;
-    };
+/// The interchange roles first, then every other colour space that is not
+/// data.
+std::vector<Candidate> Candidates(const OCIO::ConstConfigRcPtr& config, const std::string& slName)
+{
     std::vector<Candidate> candidates;
-    for (const char* role : {OCIO::ROLE_INTERCHANGE_DISPLAY, OCIO::ROLE_INTERCHANGE_SCENE})
+    for (const InterchangeRole role : {InterchangeRole::DISPLAY, InterchangeRole::SCENE})
     {
-        if (OCIO::ConstColorSpaceRcPtr cs = config->getColorSpace(role))
+        if (OCIO::ConstColorSpaceRcPtr cs = config->getColorSpace(RoleName(role)))
         {
             candidates.push_back({cs, role});
         }
@@ -204,85 +218,100 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
     {
         if (cs->getName() != slName && !cs->isData())
         {
-            candidates.push_back({cs, ""});
+            candidates.push_back({cs, InterchangeRole::NONE});
         }
     }
+    return candidates;
+}
 
-    for (const Candidate& cand : candidates)
+/// scene_linear → the candidate, on the CPU in float; null for a space OCIO
+/// cannot reach (a missing file, a context variable).
+OCIO::ConstCPUProcessorRcPtr ProcessorTo(const OCIO::ConstConfigRcPtr& config,
+                                         const std::string& slName, const Candidate& cand)
+{
+    try
     {
-        OCIO::ConstCPUProcessorRcPtr cpu;
-        try
+        return config->getProcessor(slName.c_str(), cand.cs->getName())
+            ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                       OCIO::OPTIMIZATION_NONE);
+    }
+    catch (const OCIO::Exception&)
+    {
+        return nullptr;
+    }
+}
+
+/// One measurement: scene_linear → decode(candidate) is the 3×3 `m`.
+struct Measurement
+{
+    const Candidate& cand;
+    const Decoding& decoding;
+    const Mat3& m;
+    const std::string& names;  ///< the candidate's names, lower-case (NamesOf)
+    const std::string& slName;
+};
+
+/// True when `m` is the matrix from primaries `p` to the target (within
+/// 2e-3, with either adaptation the target accepts).
+bool Reaches(const Target& t, const RgbSpace& p, const Mat3& m)
+{
+    const std::vector<Mat3> accepted = t.fromPrimaries(p);
+    return std::any_of(accepted.begin(), accepted.end(),
+                       [&](const Mat3& expected)
+                       { return (m - expected).cwiseAbs().maxCoeff() < 2e-3; });
+}
+
+/// "colour space 'X' holds T encoded with E, which scene_linear 'S' reaches
+/// from P primaries".
+std::string Evidence(const Measurement& ms, const Target& t, const RgbSpace& p)
+{
+    const Candidate& cand = ms.cand;
+    const std::string what =
+        cand.role == InterchangeRole::NONE
+            ? "colour space '" + std::string(cand.cs->getName()) + "'"
+            : "the " + std::string(RoleName(cand.role)) + " role ('" + cand.cs->getName() + "')";
+    return what + " holds " + t.name +
+           (ms.decoding.linear ? "" : std::string(" encoded with ") + ms.decoding.name) +
+           ", which scene_linear '" + ms.slName + "' reaches from " + p.displayName + " primaries";
+}
+
+/// Every target the measured space may hold (an interchange role holds only
+/// its own), and every set of built-in primaries that gives the measured
+/// matrix there.
+void MatchTargets(const Measurement& ms, const std::vector<Target>& targets,
+                  std::vector<Finding>& findings)
+{
+    const InterchangeRole role = ms.cand.role;
+    const bool identity = (ms.m - Mat3::Identity()).cwiseAbs().maxCoeff() < 2e-3;
+    for (const Target& t : targets)
+    {
+        if (role != InterchangeRole::NONE && t.role != role)
         {
-            cpu = config->getProcessor(slName.c_str(), cand.cs->getName())
-                      ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                 OCIO::OPTIMIZATION_NONE);
+            continue;
         }
-        catch (const OCIO::Exception&)
+        const bool named = std::any_of(t.keywords.begin(), t.keywords.end(),
+                                       [&](const std::string& k)
+                                       { return ms.names.find(k) != std::string::npos; });
+        if (identity && !named && role == InterchangeRole::NONE)
         {
-            continue;  // a space OCIO cannot reach (missing file, context variable)
+            continue;  // a copy of scene_linear says nothing by itself
         }
-        const std::string names = NamesOf(cand.cs);
-        for (const Decoding& d : Decodings())
+        for (const RgbSpace& p : BuiltinRgbSpaces())
         {
-            // The interchange roles are linear by definition.
-            if (!cand.role.empty() && std::string(d.name) != "linear")
+            if (Reaches(t, p, ms.m))
             {
-                continue;
-            }
-            Mat3 m;
-            if (!FitMatrix(cpu, d, m))
-            {
-                continue;
-            }
-            const bool identity = (m - Mat3::Identity()).cwiseAbs().maxCoeff() < 2e-3;
-            for (const Target& t : targets)
-            {
-                if (!cand.role.empty())
-                {
-                    // cie_xyz_d65_interchange is XYZ D65; aces_interchange is AP0.
-                    const std::string meant = cand.role == OCIO::ROLE_INTERCHANGE_DISPLAY
-                                                  ? "CIE XYZ (D65 white)"
-                                                  : FindRgbSpace("aces2065-1").displayName;
-                    if (t.name != meant)
-                    {
-                        continue;
-                    }
-                }
-                const bool named = std::any_of(t.keywords.begin(), t.keywords.end(),
-                                               [&](const std::string& k)
-                                               { return names.find(k) != std::string::npos; });
-                if (identity && !named && cand.role.empty())
-                {
-                    continue;  // a copy of scene_linear says nothing by itself
-                }
-                for (const RgbSpace& p : BuiltinRgbSpaces())
-                {
-                    for (const Mat3& expected : t.fromPrimaries(p))
-                    {
-                        if ((m - expected).cwiseAbs().maxCoeff() < 2e-3)
-                        {
-                            const std::string what =
-                                cand.role.empty()
-                                    ? "colour space '" + std::string(cand.cs->getName()) + "'"
-                                    : "the " + cand.role + " role ('" + cand.cs->getName() + "')";
-                            findings.push_back({&p,
-                                                what + " holds " + t.name +
-                                                    (std::string(d.name) == "linear"
-                                                         ? ""
-                                                         : std::string(" encoded with ") + d.name) +
-                                                    ", which scene_linear '" + slName +
-                                                    "' reaches from " + p.displayName +
-                                                    " primaries",
-                                                !cand.role.empty() ? 2
-                                                : named            ? 1
-                                                                   : 0});
-                            break;
-                        }
-                    }
-                }
+                findings.push_back({&p, Evidence(ms, t, p),
+                                    role != InterchangeRole::NONE ? 2
+                                    : named                       ? 1
+                                                                  : 0});
             }
         }
     }
+}
+
+/// The most trusted evidence decides; anything as trusted must agree.
+const Finding& Decide(const std::vector<Finding>& findings, const std::string& slName)
+{
     if (findings.empty())
     {
         throw ParameterError(
@@ -291,7 +320,6 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
             "encoding (linear, sRGB, gamma, BT.709) of standard primaries or CIE XYZ "
             "measured from it: give {working_space}");
     }
-    // The most trusted evidence decides; anything as trusted must agree.
     const int best =
         std::max_element(findings.begin(), findings.end(),
                          [](const Finding& a, const Finding& b) { return a.trust < b.trust; })
@@ -314,7 +342,45 @@ SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
                                  f.evidence + ": give {working_space}");
         }
     }
-    return {chosen->primaries, chosen->evidence};
+    return *chosen;
+}
+
+}  // namespace
+
+SceneLinearIdentity IdentifySceneLinear(const OCIO::ConstConfigRcPtr& config)
+{
+    const OCIO::ConstColorSpaceRcPtr sceneLinear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
+    if (!sceneLinear)
+    {
+        throw Exception("the base config has no scene_linear role: looks need a process space");
+    }
+    const std::string slName = sceneLinear->getName();
+    const std::vector<Target> targets = Targets();
+    std::vector<Finding> findings;
+    for (const Candidate& cand : Candidates(config, slName))
+    {
+        const OCIO::ConstCPUProcessorRcPtr cpu = ProcessorTo(config, slName, cand);
+        if (!cpu)
+        {
+            continue;
+        }
+        const std::string names = NamesOf(cand.cs);
+        for (const Decoding& d : Decodings())
+        {
+            // The interchange roles are linear by definition.
+            if (cand.role != InterchangeRole::NONE && !d.linear)
+            {
+                continue;
+            }
+            Mat3 m;
+            if (FitMatrix(cpu, d, m))
+            {
+                MatchTargets({cand, d, m, names, slName}, targets, findings);
+            }
+        }
+    }
+    const Finding& chosen = Decide(findings, slName);
+    return {chosen.primaries, chosen.evidence};
 }
 
 }  // namespace bandlight

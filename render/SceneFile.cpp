@@ -606,6 +606,136 @@ SceneLight Light(const Reader& r, const YAML::Node& l, const BandSet& bands, siz
     return light;
 }
 
+/// The lights, each named once. Returns the number of direct (not ambient)
+/// lights.
+int ReadLights(const Reader& r, const YAML::Node& ls, const BandSet& bands, Scene& s)
+{
+    if (!ls.IsSequence())
+    {
+        r.fail(ls, "lights must be a list");
+    }
+    int direct = 0;
+    for (const auto& l : ls)
+    {
+        s.lights.push_back(Light(r, l, bands, s.lights.size()));
+        for (size_t i = 0; i + 1 < s.lights.size(); ++i)
+        {
+            if (s.lights[i].name == s.lights.back().name)
+            {
+                r.fail(l, "two lights are named '" + s.lights.back().name +
+                              "': a light's name is its own (lights share a layer through "
+                              "group:)");
+            }
+        }
+        direct += s.lights.back().kind != SceneLight::Kind::AMBIENT;
+    }
+    return direct;
+}
+
+/// Material name → index into Scene::materials.
+using MaterialIndex = std::map<std::string, int>;
+
+/// The materials, each defined once; R_amb* only beside exactly one direct
+/// light.
+MaterialIndex ReadMaterials(const Reader& r, const YAML::Node& ms, const BandSet& bands, int direct,
+                            Scene& s)
+{
+    if (!ms.IsMap())
+    {
+        r.fail(ms, "materials must be a mapping of name: definition");
+    }
+    MaterialIndex index;
+    for (const auto& kv : ms)
+    {
+        const std::string name = r.text(kv.first);
+        if (index.count(name))
+        {
+            r.fail(kv.first, "material '" + name + "' is defined twice");
+        }
+        index[name] = int(s.materials.size());
+        s.materials.push_back(Material(r, name, kv.second, bands));
+        if (kv.second.IsMap() && kv.second["ambient_star"] && direct != 1)
+        {
+            // The single-source form: I_0 is the one direct light.
+            r.failKey(kv.second, "ambient_star",
+                      "ambient_star (R_amb*) needs exactly one direct light, the scene has " +
+                          std::to_string(direct));
+        }
+    }
+    return index;
+}
+
+/// {center: [x, y, z], radius: r}; the origin and 1 when not given.
+Sphere ReadSphere(const Reader& r, const YAML::Node& sp, int material)
+{
+    r.keys(sp, "a sphere", {"center", "radius"});
+    Sphere sphere;
+    sphere.center = sp["center"] ? r.vec3(sp["center"], "sphere center") : Vec3::Zero();
+    sphere.radius = sp["radius"] ? r.positive(sp["radius"], "sphere radius") : 1.0;
+    if (sphere.radius > kMaxCoordinate)
+    {
+        r.fail(sp["radius"], "sphere radius must not exceed 1e9");
+    }
+    sphere.material = material;
+    return sphere;
+}
+
+/// {point: [x, y, z], normal: [x, y, z]}; the origin and +y when not given.
+Plane ReadPlane(const Reader& r, const YAML::Node& pl, int material)
+{
+    r.keys(pl, "a plane", {"point", "normal"});
+    Plane plane;
+    plane.point = pl["point"] ? r.vec3(pl["point"], "plane point") : Vec3::Zero();
+    plane.normal = pl["normal"] ? r.vec3(pl["normal"], "plane normal") : Vec3(0, 1, 0);
+    if (plane.normal.norm() < 1e-12)
+    {
+        r.fail(pl["normal"], "plane normal must not be zero");
+    }
+    plane.normal.normalize();
+    plane.material = material;
+    return plane;
+}
+
+/// The objects: each one sphere or one plane, of a material the scene
+/// defines.
+void ReadObjects(const Reader& r, const YAML::Node& os, const MaterialIndex& materials, Scene& s)
+{
+    if (!os.IsSequence())
+    {
+        r.fail(os, "objects must be a list");
+    }
+    for (const auto& o : os)
+    {
+        r.keys(o, "an object", {"sphere", "plane", "material"});
+        if (!o["material"])
+        {
+            r.fail(o, "an object needs a material");
+        }
+        const std::string mat = r.text(o["material"]);
+        const auto it = materials.find(mat);
+        if (it == materials.end())
+        {
+            r.fail(o["material"], "unknown material '" + mat + "'");
+        }
+        if (o["sphere"] && o["plane"])
+        {
+            r.failKey(o, "plane", "an object is one sphere or one plane, not both");
+        }
+        if (o["sphere"])
+        {
+            s.spheres.push_back(ReadSphere(r, o["sphere"], it->second));
+        }
+        else if (o["plane"])
+        {
+            s.planes.push_back(ReadPlane(r, o["plane"], it->second));
+        }
+        else
+        {
+            r.fail(o, "an object is a sphere or a plane");
+        }
+    }
+}
+
 Scene ParseScene(const YAML::Node& root, const std::string& path)
 {
     const size_t slash = path.find_last_of('/');
@@ -622,118 +752,17 @@ Scene ParseScene(const YAML::Node& root, const std::string& path)
     {
         ReadRender(r, rn, s.settings);
     }
-    const BandSet& bands = s.settings.bands;
     if (const YAML::Node c = root["camera"])
     {
         ReadCamera(r, c, s.camera);
     }
-
-    int direct = 0;
-    if (const YAML::Node ls = root["lights"])
-    {
-        if (!ls.IsSequence())
-        {
-            r.fail(ls, "lights must be a list");
-        }
-        for (const auto& l : ls)
-        {
-            s.lights.push_back(Light(r, l, bands, s.lights.size()));
-            for (size_t i = 0; i + 1 < s.lights.size(); ++i)
-            {
-                if (s.lights[i].name == s.lights.back().name)
-                {
-                    r.fail(l, "two lights are named '" + s.lights.back().name +
-                                  "': a light's name is its own (lights share a layer through "
-                                  "group:)");
-                }
-            }
-            direct += s.lights.back().kind != SceneLight::Kind::AMBIENT;
-        }
-    }
-
-    std::map<std::string, int> materialIndex;
-    if (const YAML::Node ms = root["materials"])
-    {
-        if (!ms.IsMap())
-        {
-            r.fail(ms, "materials must be a mapping of name: definition");
-        }
-        for (const auto& kv : ms)
-        {
-            const std::string name = r.text(kv.first);
-            if (materialIndex.count(name))
-            {
-                r.fail(kv.first, "material '" + name + "' is defined twice");
-            }
-            materialIndex[name] = int(s.materials.size());
-            s.materials.push_back(Material(r, name, kv.second, bands));
-            if (kv.second.IsMap() && kv.second["ambient_star"] && direct != 1)
-            {
-                // The single-source form: I_0 is the one direct light.
-                r.failKey(kv.second, "ambient_star",
-                          "ambient_star (R_amb*) needs exactly one direct light, the scene has " +
-                              std::to_string(direct));
-            }
-        }
-    }
-
+    const int direct = root["lights"] ? ReadLights(r, root["lights"], s.settings.bands, s) : 0;
+    const MaterialIndex materials =
+        root["materials"] ? ReadMaterials(r, root["materials"], s.settings.bands, direct, s)
+                          : MaterialIndex{};
     if (const YAML::Node os = root["objects"])
     {
-        if (!os.IsSequence())
-        {
-            r.fail(os, "objects must be a list");
-        }
-        for (const auto& o : os)
-        {
-            r.keys(o, "an object", {"sphere", "plane", "material"});
-            if (!o["material"])
-            {
-                r.fail(o, "an object needs a material");
-            }
-            const std::string mat = r.text(o["material"]);
-            const auto it = materialIndex.find(mat);
-            if (it == materialIndex.end())
-            {
-                r.fail(o["material"], "unknown material '" + mat + "'");
-            }
-            if (o["sphere"] && o["plane"])
-            {
-                r.failKey(o, "plane", "an object is one sphere or one plane, not both");
-            }
-            if (o["sphere"])
-            {
-                const YAML::Node sp = o["sphere"];
-                r.keys(sp, "a sphere", {"center", "radius"});
-                Sphere sphere;
-                sphere.center = sp["center"] ? r.vec3(sp["center"], "sphere center") : Vec3::Zero();
-                sphere.radius = sp["radius"] ? r.positive(sp["radius"], "sphere radius") : 1.0;
-                if (sphere.radius > kMaxCoordinate)
-                {
-                    r.fail(sp["radius"], "sphere radius must not exceed 1e9");
-                }
-                sphere.material = it->second;
-                s.spheres.push_back(sphere);
-            }
-            else if (o["plane"])
-            {
-                const YAML::Node pl = o["plane"];
-                r.keys(pl, "a plane", {"point", "normal"});
-                Plane plane;
-                plane.point = pl["point"] ? r.vec3(pl["point"], "plane point") : Vec3::Zero();
-                plane.normal = pl["normal"] ? r.vec3(pl["normal"], "plane normal") : Vec3(0, 1, 0);
-                if (plane.normal.norm() < 1e-12)
-                {
-                    r.fail(pl["normal"], "plane normal must not be zero");
-                }
-                plane.normal.normalize();
-                plane.material = it->second;
-                s.planes.push_back(plane);
-            }
-            else
-            {
-                r.fail(o, "an object is a sphere or a plane");
-            }
-        }
+        ReadObjects(r, os, materials, s);
     }
     if (s.lights.empty())
     {

@@ -10,7 +10,7 @@ namespace bandlight
 {
 
 /// What the renderer will evaluate, decided from the scene before any pixel
-/// (the planner's rule: simulate only the effects a scene calls for: simulate only the effects a scene calls for). The plan
+/// (the planner's rule: simulate only the effects a scene calls for). The plan
 /// changes the cost, never the picture: RenderScene with a plan gives
 /// RenderSceneUnplanned's image (tested to 1e-6 on generated scenes).
 struct ScenePlan

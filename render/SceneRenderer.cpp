@@ -299,127 +299,172 @@ RenderedImage RenderScene(const Scene& s, const ScenePlan& p, int threads, Rende
         });
 }
 
-RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* counters)
+namespace
 {
-    CheckScene(s);
-    const Output out = MakeOutput(s);
+
+/// A material's remittances on the render's samples.
+struct RemittanceSamples
+{
+    std::vector<double> amb, diff, spec, star;
+};
+
+/// What the literal path integrates with: every light (scaled) and every
+/// remittance sampled on the grid (spectral mode) or as band means.
+struct LiteralSamples
+{
+    bool spectral;
+    Grid grid;  ///< spectral mode; unused in band mode
+    Cmf cmf;
+    int n;  ///< samples (or bands) per spectrum
+    std::vector<std::vector<double>> light;
+    std::vector<double> lightScale;  ///< each light's band-model normalisation
+    std::vector<RemittanceSamples> rem;
+    Eigen::MatrixXd bandToXyz;
+};
+
+LiteralSamples SampleScene(const Scene& s)
+{
     const bool spectral = s.settings.mode == RenderSettings::Mode::SPECTRAL;
     const BandSet& bands = s.settings.bands;
     // The same grid the planner would choose, so the two paths compare.
     std::string why;
     const Grid grid =
         spectral ? MakeGrid(s.settings, GridStep(s, why)) : MakeGrid(RenderSettings{}, 5.0);
-    const Cmf cmf = MakeCmf(grid, bands);
-    const int n = spectral ? grid.count : int(bands.size());
-
-    // Samples of every light (scaled) and remittance: band means or the grid.
-    auto samplesOf = [&](const SceneSpectrum& sp, double scale)
+    LiteralSamples ls{spectral, grid, MakeCmf(grid, bands), 0, {}, {}, {}, BandToXyz(bands)};
+    ls.n = spectral ? grid.count : int(bands.size());
+    for (const SceneLight& l : s.lights)
     {
-        std::vector<double> v = spectral ? Sample(sp.continuous, grid) : Means(sp, bands);
+        const double scale = LightScale(l.spectrum, bands);
+        std::vector<double> v =
+            spectral ? Sample(l.spectrum.continuous, grid) : Means(l.spectrum, bands);
         for (double& x : v)
         {
             x *= scale;
         }
-        return v;
-    };
-    std::vector<std::vector<double>> light(s.lights.size());
-    std::vector<double> lightScale(s.lights.size());
-    for (size_t i = 0; i < s.lights.size(); ++i)
-    {
-        lightScale[i] = LightScale(s.lights[i].spectrum, bands);
-        light[i] = samplesOf(s.lights[i].spectrum, lightScale[i]);
+        ls.lightScale.push_back(scale);
+        ls.light.push_back(std::move(v));
     }
-    struct Rem
+    const auto samples = [&](const SceneSpectrum& x)
     {
-        std::vector<double> amb, diff, spec, star;
+        if (x.continuous.empty())
+        {
+            return std::vector<double>(size_t(ls.n), 0.0);
+        }
+        return spectral ? Sample(x.continuous, grid) : BandMeans(x.continuous, bands);
     };
-    std::vector<Rem> rem;
     for (const SceneMaterial& m : s.materials)
     {
-        auto r = [&](const SceneSpectrum& x)
-        {
-            if (x.continuous.empty())
-            {
-                return std::vector<double>(size_t(n), 0.0);
-            }
-            return spectral ? Sample(x.continuous, grid) : BandMeans(x.continuous, bands);
-        };
-        rem.push_back({r(m.ambient), r(m.diffuse), r(m.specular), r(m.ambientStar)});
+        ls.rem.push_back(
+            {samples(m.ambient), samples(m.diffuse), samples(m.specular), samples(m.ambientStar)});
     }
-    const Eigen::MatrixXd bm = BandToXyz(bands);
-    const MatchingFunctions& f = GetMatchingFunctions(Observer::CIE1931_2DEG);
+    return ls;
+}
 
+/// How much of a light's remittance terms reach the eye from a hit: an
+/// ambient light's intensity on R_amb, a direct light's geometry on R_diff
+/// and R_spek and its intensity on R_amb*.
+struct TermWeights
+{
+    double kd = 0.0, ks = 0.0, ka = 0.0, kstar = 0.0;
+};
+
+/// Every term evaluated, whatever the scene: the literal path.
+TermWeights WeighTerms(const SceneLight& l, const Hit& hit, const Vec3& d, double exponent,
+                       RenderCounters& c)
+{
+    TermWeights k;
+    if (l.kind == SceneLight::Kind::AMBIENT)
+    {
+        k.ka = l.intensity;
+        return k;
+    }
+    k.kstar = l.intensity;  // R_amb*: only with one direct light (checked by the plan)
+    const Factors fa = LightFactors(l, hit, -d, exponent, true, true, c);
+    k.kd = fa.diffuse;
+    k.ks = fa.specular;
+    return k;
+}
+
+/// acc += light × (the weighted remittances), sample by sample.
+void AddLightSamples(const std::vector<double>& light, const RemittanceSamples& rem,
+                     const TermWeights& k, std::vector<double>& acc)
+{
+    for (size_t i = 0; i < acc.size(); ++i)
+    {
+        acc[i] += light[i] * (k.ka * rem.amb[i] + k.kd * rem.diff[i] + k.ks * rem.spec[i] +
+                              k.kstar * rem.star[i]);
+    }
+}
+
+/// xyz += each of the light's emission lines inside the grid on the
+/// material's remittances, at the line's own wavelength.
+void AddLinesXyz(const LiteralSamples& ls, const SceneLight& l, double lightScale,
+                 const SceneMaterial& mat, const TermWeights& k, Vec3& xyz)
+{
+    const MatchingFunctions& f = GetMatchingFunctions(Observer::CIE1931_2DEG);
+    for (const SpectralLine& line : l.spectrum.lines.lines())
+    {
+        const double w = line.wavelengthNm;
+        if (!ls.grid.contains(w))
+        {
+            continue;
+        }
+        const double r =
+            k.ka * mat.ambient.continuous(w) + k.kd * mat.diffuse.continuous(w) +
+            k.ks * mat.specular.continuous(w) +
+            (mat.ambientStar.continuous.empty() ? 0.0 : k.kstar * mat.ambientStar.continuous(w));
+        xyz += lightScale * line.power * r * Vec3(f.x(w), f.y(w), f.z(w)) / ls.cmf.norm.y();
+    }
+}
+
+/// A pixel's samples in the output's channels: integrated against the
+/// matching functions (spectral mode, with the lines' XYZ), written as they
+/// are (band output), or from band values to XYZ to the output.
+std::vector<double> LiteralColour(const LiteralSamples& ls, const Output& out,
+                                  const std::vector<double>& acc, const Vec3& linesXyz)
+{
+    if (ls.spectral)
+    {
+        Vec3 xyz = linesXyz;
+        for (int i = 0; i < ls.n; ++i)
+        {
+            xyz += acc[size_t(i)] * ls.cmf.weight[size_t(i)];
+        }
+        return ToChannels(out, xyz);
+    }
+    if (out.bands)
+    {
+        return acc;
+    }
+    return ToChannels(out, ls.bandToXyz * Eigen::Map<const Eigen::VectorXd>(acc.data(), ls.n));
+}
+
+}  // namespace
+
+RenderedImage RenderSceneUnplanned(const Scene& s, int threads, RenderCounters* counters)
+{
+    CheckScene(s);
+    const Output out = MakeOutput(s);
+    const LiteralSamples ls = SampleScene(s);
     return CastRays(
-        s, out, threads, counters, size_t(n),
+        s, out, threads, counters, size_t(ls.n),
         [&](const Hit& hit, const Vec3& d, std::vector<double>& acc, RenderCounters& c, float* px)
         {
             const size_t m = size_t(hit.material);
             std::fill(acc.begin(), acc.end(), 0.0);
-            Vec3 lineXyz = Vec3::Zero();
+            Vec3 linesXyz = Vec3::Zero();
             for (size_t li = 0; li < s.lights.size(); ++li)
             {
                 const SceneLight& l = s.lights[li];
-                double kd = 0.0, ks = 0.0, ka = 0.0, kstar = 0.0;
-                if (l.kind == SceneLight::Kind::AMBIENT)
+                const TermWeights k = WeighTerms(l, hit, d, s.materials[m].exponent, c);
+                AddLightSamples(ls.light[li], ls.rem[m], k, acc);
+                c.spectralSamples += uint64_t(ls.n);
+                if (ls.spectral)
                 {
-                    ka = l.intensity;
-                }
-                else
-                {
-                    kstar = l.intensity;  // R_amb*: only with one direct light (checked by the
-                                          // plan)
-                    const Factors fa =
-                        LightFactors(l, hit, -d, s.materials[m].exponent, true, true, c);
-                    kd = fa.diffuse;
-                    ks = fa.specular;
-                }
-                for (int i = 0; i < n; ++i)
-                {
-                    acc[size_t(i)] +=
-                        light[li][size_t(i)] *
-                        (ka * rem[m].amb[size_t(i)] + kd * rem[m].diff[size_t(i)] +
-                         ks * rem[m].spec[size_t(i)] + kstar * rem[m].star[size_t(i)]);
-                }
-                c.spectralSamples += uint64_t(n);
-                if (spectral)
-                {
-                    const SceneMaterial& mat = s.materials[m];
-                    for (const SpectralLine& line : l.spectrum.lines.lines())
-                    {
-                        const double w = line.wavelengthNm;
-                        if (!grid.contains(w))
-                        {
-                            continue;
-                        }
-                        const double r = ka * mat.ambient.continuous(w) +
-                                         kd * mat.diffuse.continuous(w) +
-                                         ks * mat.specular.continuous(w) +
-                                         (mat.ambientStar.continuous.empty()
-                                              ? 0.0
-                                              : kstar * mat.ambientStar.continuous(w));
-                        lineXyz += lightScale[li] * line.power * r * Vec3(f.x(w), f.y(w), f.z(w)) /
-                                   cmf.norm.y();
-                    }
+                    AddLinesXyz(ls, l, ls.lightScale[li], s.materials[m], k, linesXyz);
                 }
             }
-            std::vector<double> colour;
-            if (spectral)
-            {
-                Vec3 xyz = lineXyz;
-                for (int i = 0; i < n; ++i)
-                {
-                    xyz += acc[size_t(i)] * cmf.weight[size_t(i)];
-                }
-                colour = ToChannels(out, xyz);
-            }
-            else if (out.bands)
-            {
-                colour = acc;
-            }
-            else
-            {
-                colour = ToChannels(out, bm * Eigen::Map<const Eigen::VectorXd>(acc.data(), n));
-            }
+            const std::vector<double> colour = LiteralColour(ls, out, acc, linesXyz);
             for (size_t k = 0; k < colour.size(); ++k)
             {
                 px[k] = float(colour[k]);

@@ -2,6 +2,7 @@
 #include "bandlight/spectral/CameraFile.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -78,37 +79,45 @@ CameraSensitivities Finish(CameraSensitivities cam, const std::string& source)
     return cam;
 }
 
-CameraSensitivities ReadJson(const std::string& text, const std::string& source)
+using Json = nlohmann::json;
+
+Json ParseJson(const std::string& text, const std::string& source)
 {
-    nlohmann::json j;
     try
     {
-        j = nlohmann::json::parse(text);
+        return Json::parse(text);
     }
-    catch (const nlohmann::json::parse_error& e)
+    catch (const Json::parse_error& e)
     {
         throw Exception(source + ":" + std::to_string(LineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
                         ": not valid JSON: " + OneLine(e.what(), 200));
     }
-    catch (const nlohmann::json::exception& e)
+    catch (const Json::exception& e)
     {
         // A number beyond double's range ("1e400") is out_of_range, not a parse error.
         throw Exception(source + ": not a camera file: " + OneLine(e.what(), 200));
     }
-    const auto need = [&](const nlohmann::json& parent, const char* key,
-                          const std::string& path) -> const nlohmann::json&
+}
+
+/// parent[key], which a rawtoaces camera file must have; `path` names it
+/// from the root for the message.
+const Json& Need(const Json& parent, const char* key, const std::string& path,
+                 const std::string& source)
+{
+    if (!parent.is_object() || !parent.contains(key))
     {
-        if (!parent.is_object() || !parent.contains(key))
-        {
-            throw Exception(source + ": no \"" + path +
-                            "\" in this camera file (rawtoaces JSON: "
-                            "spectral_data.data.main maps wavelengths to [R, G, B])");
-        }
-        return parent.at(key);
-    };
-    const nlohmann::json& sd = need(j, "spectral_data", "spectral_data");
-    const nlohmann::json& main =
-        need(need(sd, "data", "spectral_data.data"), "main", "spectral_data.data.main");
+        throw Exception(source + ": no \"" + path +
+                        "\" in this camera file (rawtoaces JSON: "
+                        "spectral_data.data.main maps wavelengths to [R, G, B])");
+    }
+    return parent.at(key);
+}
+
+/// spectral_data.data.main: two to MAX_SPECTRUM_SAMPLES wavelengths.
+const Json& MainTable(const Json& spectralData, const std::string& source)
+{
+    const Json& main = Need(Need(spectralData, "data", "spectral_data.data", source), "main",
+                            "spectral_data.data.main", source);
     if (!main.is_object() || main.size() < 2)
     {
         throw Exception(source +
@@ -120,71 +129,99 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
         throw Exception(source + ": " + std::to_string(main.size()) + " wavelengths; at most " +
                         std::to_string(MAX_SPECTRUM_SAMPLES) + " are read");
     }
-    // Channel order from index.main (default R, G, B).
-    int order[3] = {0, 1, 2};
-    if (sd.contains("index") && sd.at("index").is_object() && sd.at("index").contains("main"))
+    return main;
+}
+
+/// 0, 1, 2 for a name of R, G or B ("r", "Red", …); -1 for anything else.
+int ChannelIndex(const Json& name)
+{
+    static const std::pair<const char*, int> kNames[] = {
+        {"r", 0}, {"red", 0}, {"g", 1}, {"green", 1}, {"b", 2}, {"blue", 2},
+    };
+    const std::string n = name.is_string() ? Lower(name.get<std::string>()) : std::string();
+    for (const auto& [known, index] : kNames)
     {
-        const nlohmann::json& idx = sd.at("index").at("main");
-        if (!idx.is_array() || idx.size() != 3)
+        if (n == known)
+        {
+            return index;
+        }
+    }
+    return -1;
+}
+
+/// Which of R, G, B each of a row's three numbers is, from
+/// spectral_data.index.main (R, G, B when the file does not say).
+std::array<int, 3> ChannelOrder(const Json& spectralData, const std::string& source)
+{
+    std::array<int, 3> order = {0, 1, 2};
+    if (!spectralData.contains("index") || !spectralData.at("index").is_object() ||
+        !spectralData.at("index").contains("main"))
+    {
+        return order;
+    }
+    const Json& idx = spectralData.at("index").at("main");
+    if (!idx.is_array() || idx.size() != 3)
+    {
+        throw Exception(source +
+                        ": spectral_data.index.main must name three channels, R, G "
+                        "and B");
+    }
+    bool seen[3] = {false, false, false};
+    for (size_t k = 0; k < 3; ++k)
+    {
+        const int c = ChannelIndex(idx.at(k));
+        if (c < 0 || seen[c])
         {
             throw Exception(source +
-                            ": spectral_data.index.main must name three channels, R, G "
-                            "and B");
+                            ": spectral_data.index.main must name R, G and B once "
+                            "each, got " +
+                            OneLine(idx.dump(), 200));
         }
-        bool seen[3] = {false, false, false};
-        for (int k = 0; k < 3; ++k)
-        {
-            const std::string n = idx.at(size_t(k)).is_string()
-                                      ? Lower(idx.at(size_t(k)).get<std::string>())
-                                      : std::string();
-            const int c = n == "r" || n == "red"     ? 0
-                          : n == "g" || n == "green" ? 1
-                          : n == "b" || n == "blue"  ? 2
-                                                     : -1;
-            if (c < 0 || seen[c])
-            {
-                throw Exception(source +
-                                ": spectral_data.index.main must name R, G and B once "
-                                "each, got " +
-                                OneLine(idx.dump(), 200));
-            }
-            seen[c] = true;
-            order[k] = c;
-        }
+        seen[c] = true;
+        order[k] = c;
     }
-    std::vector<std::pair<double, Vec3>> rows;
-    for (auto it = main.begin(); it != main.end(); ++it)
+    return order;
+}
+
+using SensitivityRow = std::pair<double, Vec3>;  ///< nm, R G B
+
+[[noreturn]] void BadRow(const std::string& source, const std::string& key, const std::string& why)
+{
+    throw Exception(source + ": spectral_data.data.main \"" + OneLine(key, 60) + "\": " + why);
+}
+
+/// One "wavelength": [three numbers] entry, its numbers put in R, G, B order.
+SensitivityRow ReadRow(const std::string& key, const Json& v, const std::array<int, 3>& order,
+                       const std::string& source)
+{
+    char* end = nullptr;
+    const double wl = std::strtod(key.c_str(), &end);
+    if (key.empty() || end != key.c_str() + key.size() || !std::isfinite(wl) || wl <= 0.0 ||
+        wl > 1e5)
     {
-        const std::string& key = it.key();
-        const auto bad = [&](const std::string& why) {
-            throw Exception(source + ": spectral_data.data.main \"" + OneLine(key, 60) +
-                            "\": " + why);
-        };
-        char* end = nullptr;
-        const double wl = std::strtod(key.c_str(), &end);
-        if (key.empty() || end != key.c_str() + key.size() || !std::isfinite(wl) || wl <= 0.0 ||
-            wl > 1e5)
-        {
-            bad("not a wavelength in nm (0-100000)");
-        }
-        const nlohmann::json& v = it.value();
-        if (!v.is_array() || v.size() != 3)
-        {
-            bad("needs three numbers [R, G, B]");
-        }
-        Vec3 rgb;
-        for (int k = 0; k < 3; ++k)
-        {
-            const nlohmann::json& x = v.at(size_t(k));
-            if (!x.is_number() || !std::isfinite(x.get<double>()) ||
-                std::fabs(x.get<double>()) > 1e30)
-            {
-                bad("value " + OneLine(x.dump(), 60) + " is not a finite number");
-            }
-            rgb[order[k]] = x.get<double>();
-        }
-        rows.emplace_back(wl, rgb);
+        BadRow(source, key, "not a wavelength in nm (0-100000)");
     }
+    if (!v.is_array() || v.size() != 3)
+    {
+        BadRow(source, key, "needs three numbers [R, G, B]");
+    }
+    Vec3 rgb;
+    for (size_t k = 0; k < 3; ++k)
+    {
+        const Json& x = v.at(k);
+        if (!x.is_number() || !std::isfinite(x.get<double>()) || std::fabs(x.get<double>()) > 1e30)
+        {
+            BadRow(source, key, "value " + OneLine(x.dump(), 60) + " is not a finite number");
+        }
+        rgb[order[k]] = x.get<double>();
+    }
+    return {wl, rgb};
+}
+
+/// The rows sorted by wavelength, and their step in nm: camera files are
+/// sampled on a regular grid.
+double SortOnRegularGrid(std::vector<SensitivityRow>& rows, const std::string& source)
+{
     std::sort(rows.begin(), rows.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     const double step = rows[1].first - rows[0].first;
@@ -198,18 +235,12 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
                             " nm): camera files must be sampled on a regular grid");
         }
     }
-    CameraSensitivities cam;
-    std::vector<double> ch[3];
-    for (const auto& r : rows)
-    {
-        for (int c = 0; c < 3; ++c)
-        {
-            ch[c].push_back(r.second[c]);
-        }
-    }
-    cam.red = Spectrum(rows.front().first, step, ch[0]);
-    cam.green = Spectrum(rows.front().first, step, ch[1]);
-    cam.blue = Spectrum(rows.front().first, step, ch[2]);
+    return step;
+}
+
+/// "manufacturer model" from the header, or else the file's name.
+std::string CameraName(const Json& j, const std::string& source)
+{
     std::string name;
     if (j.contains("header") && j.at("header").is_object())
     {
@@ -221,7 +252,36 @@ CameraSensitivities ReadJson(const std::string& text, const std::string& source)
             }
         }
     }
-    cam.name = name.empty() ? source : OneLine(name, 120);
+    return name.empty() ? source : OneLine(name, 120);
+}
+
+/// A rawtoaces camera file: spectral_data.data.main maps each wavelength
+/// (nm) to [R, G, B].
+CameraSensitivities ReadJson(const std::string& text, const std::string& source)
+{
+    const Json j = ParseJson(text, source);
+    const Json& sd = Need(j, "spectral_data", "spectral_data", source);
+    const Json& main = MainTable(sd, source);
+    const std::array<int, 3> order = ChannelOrder(sd, source);
+    std::vector<SensitivityRow> rows;
+    for (auto it = main.begin(); it != main.end(); ++it)
+    {
+        rows.push_back(ReadRow(it.key(), it.value(), order, source));
+    }
+    const double step = SortOnRegularGrid(rows, source);
+    std::vector<double> ch[3];
+    for (const auto& r : rows)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            ch[c].push_back(r.second[c]);
+        }
+    }
+    CameraSensitivities cam;
+    cam.red = Spectrum(rows.front().first, step, ch[0]);
+    cam.green = Spectrum(rows.front().first, step, ch[1]);
+    cam.blue = Spectrum(rows.front().first, step, ch[2]);
+    cam.name = CameraName(j, source);
     cam.source = source;
     return Finish(std::move(cam), source);
 }

@@ -2,6 +2,7 @@
 #include "bandlight/spectral/SpectralImage.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -189,7 +190,7 @@ std::string SpectralLayout::describe() const
         const double hi = sampling == SpectralSampling::BUCKETS ? edges.back() : wavelengths.back();
         o << " " << lo << "-" << hi << " nm";
     }
-    o << " (" << layout << ")";
+    o << " (" << SpectralLayoutFamilyName(family) << ")";
     return o.str();
 }
 
@@ -257,12 +258,15 @@ bool IsRegular(const std::vector<double>& w)
     return true;
 }
 
+/// Band edges per channel name, as bandlight:bands lists them (nm).
+using BandEdges = std::map<std::string, std::pair<double, double>>;
+
 /// bandlight's band renders list their bands in bandlight:bands as
 /// "B 400-500,G 500-600,R 600-700" (channel name, edges in nm); returns the
 /// edges per channel name.
-std::map<std::string, std::pair<double, double>> BandRenderEdges(const std::string& text)
+BandEdges BandRenderEdges(const std::string& text)
 {
-    std::map<std::string, std::pair<double, double>> bands;
+    BandEdges bands;
     std::istringstream in(text);
     std::string item;
     while (std::getline(in, item, ','))
@@ -279,159 +283,232 @@ std::map<std::string, std::pair<double, double>> BandRenderEdges(const std::stri
     return bands;
 }
 
-}  // namespace
-
-SpectralLayout FindSpectralLayout(const std::string& file,
-                                  const std::vector<std::string>& channelNames,
-                                  const std::map<std::string, std::string>& attributes,
-                                  const SpectralLayoutOptions& options)
+/// What a layout is read from: the image's channel names and header, and
+/// what the user says about them.
+struct LayoutInput
 {
-    const auto attribute = [&](const std::string& key) -> const std::string*
+    const std::string& file;
+    const std::vector<std::string>& channelNames;
+    const std::map<std::string, std::string>& attributes;
+    const SpectralLayoutOptions& options;
+    BandEdges bandEdges;  ///< from bandlight:bands; empty without one
+
+    const std::string* attribute(const std::string& key) const
     {
         const auto it = attributes.find(key);
         return it == attributes.end() ? nullptr : &it->second;
-    };
+    }
+    /// The channel's name on one line, for messages.
+    std::string name(int channel) const { return OneLine(channelNames[size_t(channel)], 80); }
+};
+
+/// A spectral channel: its wavelength in nm and its image channel.
+struct Found
+{
+    double nm;
+    int channel;
+};
+
+/// What one family's reader finds, before the checks all families share.
+struct FamilyChannels
+{
+    SpectralKind kind = SpectralKind::EMISSIVE;
+    std::vector<Found> found;  ///< in image order
+    std::vector<std::string> notes;
+};
+
+/// The header before any channel: the layout version and a channel count a
+/// spectrum could have.
+void CheckHeader(const LayoutInput& in)
+{
     // "1.0" as the layout writes it (a float 1, as some tools write it, too).
-    if (const std::string* v = attribute("spectralLayoutVersion");
+    if (const std::string* v = in.attribute("spectralLayoutVersion");
         v && *v != "1.0" && std::strtod(v->c_str(), nullptr) != 1.0)
     {
-        throw Exception(In(file) + "spectralLayoutVersion is '" + OneLine(*v, 40) +
+        throw Exception(In(in.file) + "spectralLayoutVersion is '" + OneLine(*v, 40) +
                         "'; bandlight reads version 1.0 of the layout (Fichet et al. 2021)");
     }
-    if (channelNames.size() > size_t(kMaxSpectralChannels) + 16)
+    // Room for the non-spectral channels (RGBA, depth, …) beside the spectrum.
+    if (in.channelNames.size() > size_t(kMaxSpectralChannels) + 16)
     {
-        throw Exception(In(file) + "has " + std::to_string(channelNames.size()) +
+        throw Exception(In(in.file) + "has " + std::to_string(in.channelNames.size()) +
                         " channels; bandlight reads at most " +
                         std::to_string(kMaxSpectralChannels) + " spectral channels");
     }
-    SpectralLayout layout;
-    struct Found
+}
+
+/// Channels named otherwise, at the wavelengths the user gives: point
+/// samples of the kind the user says.
+FamilyChannels ReadNamedChannels(const LayoutInput& in)
+{
+    FamilyChannels r;
+    r.kind = in.options.namedKind;
+    for (const auto& [name, nm] : in.options.namedWavelengths)
     {
-        double nm;
-        int channel;
-    };
-    std::vector<Found> found;
-    std::string unit;
-    std::string firstName;
+        const auto it = std::find(in.channelNames.begin(), in.channelNames.end(), name);
+        if (it == in.channelNames.end())
+        {
+            throw Exception(In(in.file) + "has no channel '" + OneLine(name, 80) +
+                            "' (the channel wavelengths name it)");
+        }
+        if (!std::isfinite(nm) || nm <= 0.0)
+        {
+            throw Exception(In(in.file) + "channel '" + OneLine(name, 80) +
+                            "' is given a wavelength that is " +
+                            (std::isfinite(nm) ? "not positive" : "not a finite number"));
+        }
+        r.found.push_back({nm, int(it - in.channelNames.begin())});
+    }
+    return r;
+}
+
+/// bandlight's own band render: each channel a band's mean radiance, placed
+/// at the band's centre; every band listed must be a channel.
+FamilyChannels ReadBandRender(const LayoutInput& in)
+{
+    FamilyChannels r;
+    r.kind = SpectralKind::EMISSIVE;
+    for (size_t c = 0; c < in.channelNames.size(); ++c)
+    {
+        const auto it = in.bandEdges.find(in.channelNames[c]);
+        if (it != in.bandEdges.end())
+        {
+            r.found.push_back({0.5 * (it->second.first + it->second.second), int(c)});
+        }
+    }
+    if (r.found.size() != in.bandEdges.size())
+    {
+        throw Exception(In(in.file) + "bandlight:bands lists " +
+                        std::to_string(in.bandEdges.size()) + " bands but the image has " +
+                        std::to_string(r.found.size()) + " of them as channels");
+    }
+    return r;
+}
+
+/// Fichet 2021 channel names: S0 (radiance) or T (remittance) channels in
+/// one unit; the polarisation components S1–S3 are noted and left out.
+FamilyChannels ReadFichet2021(const LayoutInput& in)
+{
+    FamilyChannels r;
+    std::string unit, firstName;
     bool emissive = false, reflective = false;
     std::vector<int> polarised;
-    const std::string* bandText = attribute("bandlight:bands");
-    const auto bandEdges =
-        bandText ? BandRenderEdges(*bandText) : std::map<std::string, std::pair<double, double>>{};
-    std::vector<std::pair<double, double>> bucketEdges;
+    for (size_t c = 0; c < in.channelNames.size(); ++c)
+    {
+        const std::optional<SpectralChannel> s = ParseSpectralChannel(in.channelNames[c], in.file);
+        if (!s)
+        {
+            continue;
+        }
+        if (unit.empty())
+        {
+            unit = s->unit;
+            firstName = in.channelNames[c];
+        }
+        else if (s->unit != unit)
+        {
+            throw Exception(In(in.file) + "channel '" + in.name(int(c)) + "' is in " +
+                            OneLine(s->unit, 16) + " but '" + OneLine(firstName, 80) + "' is in " +
+                            unit + ": mixed units in one image");
+        }
+        if (s->kind == SpectralKind::REFLECTIVE || s->stokes == 0)
+        {
+            (s->kind == SpectralKind::REFLECTIVE ? reflective : emissive) = true;
+            r.found.push_back({s->wavelengthNm, int(c)});
+        }
+        else
+        {
+            polarised.push_back(int(c));
+        }
+    }
+    if (!polarised.empty() && !emissive)
+    {
+        throw Exception(In(in.file) + "channel '" + in.name(polarised[0]) +
+                        "' is a Stokes component (S1-S3) but the image has no S0 channels");
+    }
+    if (emissive && reflective)
+    {
+        throw Exception(In(in.file) +
+                        "has both emissive (S0) and reflective (T) channels; bandlight reads "
+                        "one kind per image");
+    }
+    r.kind = reflective ? SpectralKind::REFLECTIVE : SpectralKind::EMISSIVE;
+    if (!polarised.empty())
+    {
+        r.notes.push_back(std::to_string(polarised.size()) +
+                          " polarisation channels (S1-S3) ignored: S0 is the radiance");
+    }
+    return r;
+}
 
-    if (!options.namedWavelengths.empty())
+/// One entry per layout family: its name as describe() prints it, the
+/// reader of its channels, and what a channel's value is unless the user
+/// says otherwise.
+struct LayoutFamilyEntry
+{
+    SpectralLayoutFamily family;
+    const char* name;
+    FamilyChannels (*read)(const LayoutInput&);
+    SpectralSampling sampling;
+};
+
+// clang-format off
+const LayoutFamilyEntry kLayoutFamilies[] = {
+    {SpectralLayoutFamily::FICHET_2021,    "Fichet 2021",           ReadFichet2021,    SpectralSampling::POINTS},
+    // pbrt-v4 names its buckets as Fichet 2021 does; found among Fichet 2021 images.
+    {SpectralLayoutFamily::PBRT_V4_FILM,   "pbrt-v4 spectral film", ReadFichet2021,    SpectralSampling::BUCKETS},
+    {SpectralLayoutFamily::NAMED_CHANNELS, "named channels",        ReadNamedChannels, SpectralSampling::POINTS},
+    {SpectralLayoutFamily::BAND_RENDER,    "bandlight band render", ReadBandRender,    SpectralSampling::BUCKETS},
+};
+// clang-format on
+
+const LayoutFamilyEntry& FamilyEntry(SpectralLayoutFamily family)
+{
+    for (const LayoutFamilyEntry& e : kLayoutFamilies)
     {
-        layout.layout = "named channels";
-        layout.kind = options.namedKind;
-        for (const auto& [name, nm] : options.namedWavelengths)
+        if (e.family == family)
         {
-            const auto it = std::find(channelNames.begin(), channelNames.end(), name);
-            if (it == channelNames.end())
-            {
-                throw Exception(In(file) + "has no channel '" + OneLine(name, 80) +
-                                "' (the channel wavelengths name it)");
-            }
-            if (!std::isfinite(nm) || nm <= 0.0)
-            {
-                throw Exception(In(file) + "channel '" + OneLine(name, 80) +
-                                "' is given a wavelength that is " +
-                                (std::isfinite(nm) ? "not positive" : "not a finite number"));
-            }
-            found.push_back({nm, int(it - channelNames.begin())});
+            return e;
         }
     }
-    else if (bandText && !bandEdges.empty())
+    assert(false && "a layout family without a table entry");
+    return kLayoutFamilies[0];
+}
+
+/// Which family the channels are read as: wavelengths the user gives come
+/// first, then a band list in the header, then the channels' own names.
+SpectralLayoutFamily ChooseFamily(const LayoutInput& in)
+{
+    if (!in.options.namedWavelengths.empty())
     {
-        // bandlight's own band render: each channel a band mean.
-        layout.layout = "bandlight band render";
-        layout.kind = SpectralKind::EMISSIVE;
-        for (size_t c = 0; c < channelNames.size(); ++c)
-        {
-            const auto it = bandEdges.find(channelNames[c]);
-            if (it == bandEdges.end())
-            {
-                continue;
-            }
-            found.push_back({0.5 * (it->second.first + it->second.second), int(c)});
-        }
-        if (found.size() != bandEdges.size())
-        {
-            throw Exception(In(file) + "bandlight:bands lists " + std::to_string(bandEdges.size()) +
-                            " bands but the image has " + std::to_string(found.size()) +
-                            " of them as channels");
-        }
+        return SpectralLayoutFamily::NAMED_CHANNELS;
     }
-    else
+    if (!in.bandEdges.empty())
     {
-        layout.layout = "Fichet 2021";
-        for (size_t c = 0; c < channelNames.size(); ++c)
-        {
-            const std::optional<SpectralChannel> s = ParseSpectralChannel(channelNames[c], file);
-            if (!s)
-            {
-                continue;
-            }
-            if (unit.empty())
-            {
-                unit = s->unit;
-                firstName = channelNames[c];
-            }
-            else if (s->unit != unit)
-            {
-                throw Exception(In(file) + "channel '" + OneLine(channelNames[c], 80) + "' is in " +
-                                OneLine(s->unit, 16) + " but '" + OneLine(firstName, 80) +
-                                "' is in " + unit + ": mixed units in one image");
-            }
-            if (s->kind == SpectralKind::REFLECTIVE)
-            {
-                reflective = true;
-                found.push_back({s->wavelengthNm, int(c)});
-            }
-            else if (s->stokes == 0)
-            {
-                emissive = true;
-                found.push_back({s->wavelengthNm, int(c)});
-            }
-            else
-            {
-                polarised.push_back(int(c));
-            }
-        }
-        if (!polarised.empty() && !emissive)
-        {
-            throw Exception(In(file) + "channel '" +
-                            OneLine(channelNames[size_t(polarised[0])], 80) +
-                            "' is a Stokes component (S1-S3) but the image has no S0 channels");
-        }
-        if (emissive && reflective)
-        {
-            throw Exception(In(file) +
-                            "has both emissive (S0) and reflective (T) channels; bandlight reads "
-                            "one kind per image");
-        }
-        layout.kind = reflective ? SpectralKind::REFLECTIVE : SpectralKind::EMISSIVE;
-        if (!polarised.empty())
-        {
-            layout.notes.push_back(std::to_string(polarised.size()) +
-                                   " polarisation channels (S1-S3) ignored: S0 is the radiance");
-        }
+        return SpectralLayoutFamily::BAND_RENDER;
     }
+    return SpectralLayoutFamily::FICHET_2021;
+}
+
+/// The checks every family shares: between two and kMaxSpectralChannels
+/// channels, no two at one wavelength, all within 100–100000 nm. Sorts
+/// `found` by wavelength.
+void SortAndCheck(const LayoutInput& in, std::vector<Found>& found)
+{
     if (found.empty())
     {
-        throw Exception(In(file) +
+        throw Exception(In(in.file) +
                         "has no spectral channels (S0.<wavelength>nm or T.<wavelength>nm, "
                         "or channels given wavelengths)");
     }
     if (found.size() == 1)
     {
-        throw Exception(In(file) + "channel '" +
-                        OneLine(channelNames[size_t(found[0].channel)], 80) +
+        throw Exception(In(in.file) + "channel '" + in.name(found[0].channel) +
                         "' is its only spectral channel; a spectrum needs at least two");
     }
     if (found.size() > size_t(kMaxSpectralChannels))
     {
-        throw Exception(In(file) + "has " + std::to_string(found.size()) +
+        throw Exception(In(in.file) + "has " + std::to_string(found.size()) +
                         " spectral channels; bandlight reads at most " +
                         std::to_string(kMaxSpectralChannels));
     }
@@ -441,94 +518,143 @@ SpectralLayout FindSpectralLayout(const std::string& file,
     {
         if (!(found[i].nm - found[i - 1].nm > 1e-6 * found[i].nm))
         {
-            throw Exception(In(file) + "channels '" +
-                            OneLine(channelNames[size_t(found[i - 1].channel)], 80) + "' and '" +
-                            OneLine(channelNames[size_t(found[i].channel)], 80) +
-                            "' have the same wavelength");
+            throw Exception(In(in.file) + "channels '" + in.name(found[i - 1].channel) + "' and '" +
+                            in.name(found[i].channel) + "' have the same wavelength");
         }
     }
     if (found.front().nm < 100.0 || found.back().nm > 100000.0)
     {
         const Found& f = found.front().nm < 100.0 ? found.front() : found.back();
-        throw Exception(In(file) + "channel '" + OneLine(channelNames[size_t(f.channel)], 80) +
-                        "' lies at " + std::to_string(f.nm) +
+        throw Exception(In(in.file) + "channel '" + in.name(f.channel) + "' lies at " +
+                        std::to_string(f.nm) +
                         " nm; spectral channels must lie within 100-100000 nm");
     }
-    for (const Found& f : found)
+}
+
+/// What the header says of the values: emissiveUnits on a reflective image
+/// is refused; units other than radiance, and an exposure, are noted.
+void ReadValueAttributes(const LayoutInput& in, SpectralLayout& layout)
+{
+    if (layout.kind == SpectralKind::REFLECTIVE && in.attribute("emissiveUnits"))
     {
-        layout.wavelengths.push_back(f.nm);
-        layout.channels.push_back(f.channel);
-    }
-    if (layout.kind == SpectralKind::REFLECTIVE && attribute("emissiveUnits"))
-    {
-        throw Exception(In(file) +
+        throw Exception(In(in.file) +
                         "says emissiveUnits but its spectral channels are reflective (T)");
     }
-    if (layout.kind == SpectralKind::EMISSIVE && layout.layout == "Fichet 2021")
+    if (layout.kind == SpectralKind::EMISSIVE && layout.family == SpectralLayoutFamily::FICHET_2021)
     {
-        if (const std::string* u = attribute("emissiveUnits");
+        if (const std::string* u = in.attribute("emissiveUnits");
             u && *u != "W.m^-2.sr^-1" && *u != "W.m^-2.sr^-1.nm^-1")
         {
             layout.notes.push_back("emissiveUnits '" + OneLine(*u, 40) +
                                    "' read as relative radiance");
         }
     }
-    if (const std::string* ev = attribute("EV"); ev && std::strtod(ev->c_str(), nullptr) != 0.0)
+    if (const std::string* ev = in.attribute("EV"); ev && std::strtod(ev->c_str(), nullptr) != 0.0)
     {
         layout.notes.push_back("EV " + OneLine(*ev, 20) +
                                " (the exposure the image was made at) is noted, not applied: "
                                "values are integrated as stored");
     }
-    // Buckets or points.
-    const bool pbrt = layout.layout == "Fichet 2021" && layout.kind == SpectralKind::EMISSIVE &&
-                      (IsPbrtDefaultGrid(layout.wavelengths) ||
-                       (attribute("samplesPerPixel") && attribute("worldToNDC") &&
-                        IsRegular(layout.wavelengths)));
-    if (pbrt)
+}
+
+/// pbrt-v4's spectral film among Fichet 2021 images: radiance on its
+/// default 16-bucket grid, or on a regular grid under the header attributes
+/// pbrt writes (samplesPerPixel, worldToNDC).
+bool IsPbrtFilm(const LayoutInput& in, const SpectralLayout& layout)
+{
+    return layout.family == SpectralLayoutFamily::FICHET_2021 &&
+           layout.kind == SpectralKind::EMISSIVE &&
+           (IsPbrtDefaultGrid(layout.wavelengths) ||
+            (in.attribute("samplesPerPixel") && in.attribute("worldToNDC") &&
+             IsRegular(layout.wavelengths)));
+}
+
+/// A band render's bucket edges, as its band list gives them: increasing
+/// within each band, contiguous from one band to the next.
+std::vector<double> BandRenderBucketEdges(const LayoutInput& in, const std::vector<int>& channels)
+{
+    std::vector<std::pair<double, double>> buckets;
+    for (const int c : channels)
     {
-        layout.layout = "pbrt-v4 spectral film";
+        const auto& e = in.bandEdges.at(in.channelNames[size_t(c)]);
+        if (!(e.first < e.second) || !std::isfinite(e.first) || !std::isfinite(e.second))
+        {
+            throw Exception(In(in.file) + "bandlight:bands lists band '" + in.name(c) + "' as " +
+                            OneLine(std::to_string(e.first), 20) + "-" +
+                            OneLine(std::to_string(e.second), 20) +
+                            " nm: not an interval of increasing wavelengths");
+        }
+        buckets.push_back(e);
     }
-    const bool bands = layout.layout == "bandlight band render";
-    layout.sampling = options.sampling ? *options.sampling
-                      : pbrt || bands  ? SpectralSampling::BUCKETS
-                                       : SpectralSampling::POINTS;
-    if (bands)
+    std::vector<double> edges{buckets.front().first};
+    for (size_t i = 0; i < buckets.size(); ++i)
     {
-        for (const Found& f : found)
+        if (i > 0 && std::abs(buckets[i].first - buckets[i - 1].second) > 1e-9)
         {
-            const auto& e = bandEdges.at(channelNames[size_t(f.channel)]);
-            if (!(e.first < e.second) || !std::isfinite(e.first) || !std::isfinite(e.second))
-            {
-                throw Exception(In(file) + "bandlight:bands lists band '" +
-                                OneLine(channelNames[size_t(f.channel)], 80) + "' as " +
-                                OneLine(std::to_string(e.first), 20) + "-" +
-                                OneLine(std::to_string(e.second), 20) +
-                                " nm: not an interval of increasing wavelengths");
-            }
-            bucketEdges.push_back(e);
+            throw Exception(In(in.file) + "bandlight:bands lists bands that are not contiguous");
         }
-        layout.edges.push_back(bucketEdges.front().first);
-        for (size_t i = 0; i < bucketEdges.size(); ++i)
-        {
-            if (i > 0 && std::abs(bucketEdges[i].first - bucketEdges[i - 1].second) > 1e-9)
-            {
-                throw Exception(In(file) + "bandlight:bands lists bands that are not contiguous");
-            }
-            layout.edges.push_back(bucketEdges[i].second);
-        }
+        edges.push_back(buckets[i].second);
     }
-    else if (IsPbrtDefaultGrid(layout.wavelengths))
+    return edges;
+}
+
+/// The edges of the layout's cells: a band render's own, pbrt-v4's default
+/// buckets, or halfway between neighbouring samples.
+std::vector<double> LayoutEdges(const LayoutInput& in, const SpectralLayout& layout)
+{
+    if (layout.family == SpectralLayoutFamily::BAND_RENDER)
+    {
+        return BandRenderBucketEdges(in, layout.channels);
+    }
+    if (IsPbrtDefaultGrid(layout.wavelengths))
     {
         // pbrt-v4's buckets exactly: 360 + i · 470 / 16 nm.
+        std::vector<double> edges;
         for (int i = 0; i <= 16; ++i)
         {
-            layout.edges.push_back(360.0 + 470.0 * i / 16.0);
+            edges.push_back(360.0 + 470.0 * i / 16.0);
         }
+        return edges;
     }
-    else
+    return CellEdges(layout.wavelengths);
+}
+
+}  // namespace
+
+const char* SpectralLayoutFamilyName(SpectralLayoutFamily family)
+{
+    return FamilyEntry(family).name;
+}
+
+SpectralLayout FindSpectralLayout(const std::string& file,
+                                  const std::vector<std::string>& channelNames,
+                                  const std::map<std::string, std::string>& attributes,
+                                  const SpectralLayoutOptions& options)
+{
+    LayoutInput in{file, channelNames, attributes, options, {}};
+    CheckHeader(in);
+    if (const std::string* bands = in.attribute("bandlight:bands"))
     {
-        layout.edges = CellEdges(layout.wavelengths);
+        in.bandEdges = BandRenderEdges(*bands);
     }
+    SpectralLayout layout;
+    layout.family = ChooseFamily(in);
+    FamilyChannels read = FamilyEntry(layout.family).read(in);
+    SortAndCheck(in, read.found);
+    layout.kind = read.kind;
+    layout.notes = std::move(read.notes);
+    for (const Found& f : read.found)
+    {
+        layout.wavelengths.push_back(f.nm);
+        layout.channels.push_back(f.channel);
+    }
+    ReadValueAttributes(in, layout);
+    if (IsPbrtFilm(in, layout))
+    {
+        layout.family = SpectralLayoutFamily::PBRT_V4_FILM;
+    }
+    layout.sampling = options.sampling ? *options.sampling : FamilyEntry(layout.family).sampling;
+    layout.edges = LayoutEdges(in, layout);
     return layout;
 }
 

@@ -74,6 +74,19 @@ std::optional<SpectralChannel> ParseSpectralChannel(const std::string& name,
 /// The Fichet 2021 name of a channel: "S0.550,000000nm" or "T.550,000000nm".
 std::string SpectralChannelName(SpectralKind kind, double wavelengthNm);
 
+/// The layouts bandlight reads (docs/spectral.md).
+enum class SpectralLayoutFamily
+{
+    FICHET_2021,     ///< Fichet et al. 2021: S0.<λ><unit> and T.<λ><unit> channels
+    PBRT_V4_FILM,    ///< pbrt-v4's spectral film: Fichet 2021 names, bucket means
+    NAMED_CHANNELS,  ///< channels named otherwise, at wavelengths the user gives
+    BAND_RENDER,     ///< bandlight's band renders: band means listed in bandlight:bands
+};
+
+/// "Fichet 2021", "pbrt-v4 spectral film", "named channels" or "bandlight
+/// band render": the family as messages and describe() name it.
+const char* SpectralLayoutFamilyName(SpectralLayoutFamily family);
+
 /// The spectral channels of an image and how to integrate them.
 struct SpectralLayout
 {
@@ -83,7 +96,7 @@ struct SpectralLayout
     std::vector<int> channels;        ///< the image channel of each wavelength
     /// BUCKETS: the bucket edges, wavelengths.size() + 1 of them, nm.
     std::vector<double> edges;
-    std::string layout;  ///< "Fichet 2021", "pbrt-v4 spectral film", "named channels", …
+    SpectralLayoutFamily family = SpectralLayoutFamily::FICHET_2021;
     std::vector<std::string> notes;  ///< what was ignored or assumed, one line each
 
     /// "16 emissive buckets 360-830 nm (pbrt-v4 spectral film)".

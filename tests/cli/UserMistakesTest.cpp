@@ -282,6 +282,10 @@ TEST_CASE("Messages name what is wrong and where", "[cli][mistakes]")
     // A mistyped command is named, with the command it was likely meant to be.
     CheckOneLine(Bandlight("applyy"), "unknown command 'applyy' (did you mean apply?)");
     CheckOneLine(Bandlight(""), "give a command: tables, xyz");
+    // A command without an option it requires is not an unknown command.
+    Result noIlluminant = Bandlight("xyz");
+    CheckOneLine(noIlluminant, "--illuminant is required");
+    CHECK_THAT(noIlluminant.err, !Contains("unknown command"));
     // An empty scene is a missing file, not an option the command lacks.
     Result r = Bandlight("render ''");
     CheckOneLine(r, "'' (an empty path): no scene file to render");

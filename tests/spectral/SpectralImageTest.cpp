@@ -127,7 +127,8 @@ TEST_CASE("Spectral layouts find their channels in any order and their sampling"
     }
     const SpectralLayout b = FindSpectralLayout("p.exr", pbrt, {});
     CHECK(b.sampling == SpectralSampling::BUCKETS);
-    CHECK(b.layout == "pbrt-v4 spectral film");
+    CHECK(b.family == SpectralLayoutFamily::PBRT_V4_FILM);
+    CHECK_THAT(b.describe(), Contains("(pbrt-v4 spectral film)"));
     CHECK(b.edges.front() == Approx(360.0).margin(1e-3));
     CHECK(b.edges.back() == Approx(830.0).margin(1e-3));
 

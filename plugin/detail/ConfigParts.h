@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// The pieces configs are put together with, shared by the config builders
+// (plugin/ConfigBuilder.cpp) and the input colour spaces
+// (plugin/ConfigInputSpaces.cpp). Not installed.
+
+#include <string>
+#include <vector>
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include "bandlight/plugin/ConfigBuilder.h"
+#include "bandlight/plugin/ConfigInputSpaces.h"
+
+namespace bandlight::detail
+{
+
+/// The folder, beside config.ocio, of the CLF files a package carries.
+inline constexpr const char* kLutFolder = "luts";
+
+/// An empty scene-referred colour space with its name, family, description
+/// and encoding set.
+OCIO::ColorSpaceRcPtr SceneSpace(const std::string& name, const std::string& family,
+                                 const std::string& description, const std::string& encoding);
+
+/// An OCIO v1 config cannot hold bandlight's guard (a v2 RangeTransform)
+/// inline, nor named transforms: its additions are CLF files the package
+/// carries, referenced by FileTransforms (which OCIO reads whatever the
+/// config's version), so the base keeps its v1 meaning exactly.
+bool IsV1(const OCIO::Config& config);
+
+/// `t` as a FileTransform of a CLF file the package carries (luts/<name>.clf).
+OCIO::TransformRcPtr AsLutFile(ConfigPackage& package, const std::string& name,
+                               const OCIO::GroupTransformRcPtr& t);
+
+/// The input colour spaces (camera IDTs), each to the config's reference:
+/// its matrix into its space, that space into the working space, then the
+/// working space to the reference (`workingToReference`, none when the
+/// working space is the reference). Each matrix is also a CLF file. Throws
+/// Exception for a name the config already has.
+void AddInputSpaces(ConfigPackage& package, const std::vector<InputSpace>& spaces,
+                    const RgbSpace& working, const OCIO::ConstTransformRcPtr& workingToReference);
+
+}  // namespace bandlight::detail
