@@ -134,8 +134,8 @@ struct IdtCalibration
     double cct = 0.0;  ///< K, of the light's white (CIE 15:2004 §9.5)
     /// CIE XYZ under the light → raw camera RGB (DNG's ColorMatrix),
     /// scaled as the DNG SDK's NormalizeColorMatrix scales it: the working
-    /// white (DNG's D50, the white of its connection space) gives a camera
-    /// neutral whose largest channel is 1. Without that common scale the
+    /// white (where DNG takes D50, the white of its connection space) gives
+    /// a camera neutral whose largest channel is 1. Without that common scale the
     /// two matrices' weights would depend on each light's brightness.
     Mat3 colorMatrix = Mat3::Identity();
 };
