@@ -136,8 +136,9 @@ void AddIdtCommand(CLI::App& app)
                     "Remittances the error is also measured on (a file, or TCS)")
         ->capture_default_str();
     cmd->add_option("--interpolate", o->interpolate,
-                    "Two lights L1,L2: fit both and report the IDT interpolated between them in "
-                    "mired (as DNG) against one fitted at each CCT over 2800-6500 K");
+                    "Two lights L1,L2: fit both and report the IDT interpolated between them as "
+                    "DNG does (colour matrix in mired, white balance and CAT for each light) "
+                    "against one fitted at each CCT over 2800-6500 K");
     cmd->add_option("--as-shot-neutral", o->asShot,
                     "The camera's neutral R,G,B (raw, any scale): the daylight or Planckian light "
                     "it stands for, its CCT and Duv, and its IDT");

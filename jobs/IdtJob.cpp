@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -243,6 +244,24 @@ std::string Describe(const IdtEntry& e, const std::string& camera, const IdtResu
     return d.str();
 }
 
+/// ΔE00 of `idt`'s output against `reference`'s on the same balanced
+/// camera RGB (d.input), L*a*b* relative to d.labWhite.
+IdtError ErrorAgainst(const ColourFit& d, const Mat3& idt, const Mat3& reference)
+{
+    IdtError e;
+    e.count = int(d.input.size());
+    std::vector<double> de;
+    for (const Vec3& c : d.input)
+    {
+        de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * (idt * c), d.labWhite),
+                                XyzToLab(d.rgbToXyz * (reference * c), d.labWhite)));
+        e.mean += de.back() / double(d.input.size());
+        e.max = std::max(e.max, de.back());
+    }
+    e.p95 = Percentile(de, 0.95);
+    return e;
+}
+
 }  // namespace
 
 IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
@@ -460,31 +479,32 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
     }
     if (result.interpolateFrom >= 0)
     {
-        const IdtEntry& a = result.idts[size_t(result.interpolateFrom)];
-        const IdtEntry& b = result.idts[size_t(result.interpolateTo)];
+        for (int end = 0; end < 2; ++end)
+        {
+            const size_t i = size_t(end == 0 ? result.interpolateFrom : result.interpolateTo);
+            result.interpolateCalibrations[end] =
+                CalibrationOf(*planned[i].problem, result.idts[i].fit);
+        }
+        const IdtCalibration& a = result.interpolateCalibrations[0];
+        const IdtCalibration& b = result.interpolateCalibrations[1];
         for (double k = defaults::IDT_SWEEP_MIN_K; k <= defaults::IDT_SWEEP_MAX_K + 1e-9;
              k += defaults::IDT_SWEEP_STEP_K)
         {
             const IdtProblem problem(*camera, IdtLightForCct(k), working, adaptation, observer);
             const IdtFit direct = FitIdtOptimal(problem, training, camera->label());
-            const Mat3 m = InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k, true);
+            const Mat3 m = InterpolateIdt(a, b, problem, true);
+            const Mat3 clamped = InterpolateIdt(a, b, problem, false);
             const ColourFit d = problem.data(test);
             IdtInterpolationPoint p;
             p.cct = k;
-            for (const Vec3& c : d.input)
-            {
-                const double de =
-                    DeltaE2000(XyzToLab(d.rgbToXyz * (m * c), d.labWhite),
-                               XyzToLab(d.rgbToXyz * (direct.matrix * c), d.labWhite));
-                p.meanVsDirect += de / double(d.input.size());
-                p.maxVsDirect = std::max(p.maxVsDirect, de);
-            }
+            const IdtError e = ErrorAgainst(d, m, direct.matrix);
+            p.meanVsDirect = e.mean;
+            p.p95VsDirect = e.p95;
+            p.maxVsDirect = e.max;
+            p.clampedMeanVsDirect = ErrorAgainst(d, clamped, direct.matrix).mean;
             p.interpolatedMean = problem.errors(m, test, r.testSet).mean;
             p.directMean = problem.errors(direct.matrix, test, r.testSet).mean;
-            p.clampedMean = problem
-                                .errors(InterpolateIdt(a.fit.matrix, a.cct, b.fit.matrix, b.cct, k),
-                                        test, r.testSet)
-                                .mean;
+            p.clampedMean = problem.errors(clamped, test, r.testSet).mean;
             result.interpolation.push_back(p);
         }
     }
@@ -570,14 +590,29 @@ std::string IdtDocument(const IdtResult& r)
         {
             curve.push_back({{"cct", p.cct},
                              {"mean_vs_direct", p.meanVsDirect},
+                             {"p95_vs_direct", p.p95VsDirect},
                              {"max_vs_direct", p.maxVsDirect},
+                             {"dng_clamped_mean_vs_direct", p.clampedMeanVsDirect},
                              {"interpolated_mean", p.interpolatedMean},
                              {"direct_mean", p.directMean},
                              {"dng_clamped_mean", p.clampedMean}});
         }
+        nlohmann::ordered_json calibrations = nlohmann::ordered_json::array();
+        for (int end = 0; end < 2; ++end)
+        {
+            const IdtCalibration& c = r.interpolateCalibrations[end];
+            calibrations.push_back(
+                {{"light", r.idts[size_t(end == 0 ? r.interpolateFrom : r.interpolateTo)].light},
+                 {"cct", c.cct},
+                 {"color_matrix", MatrixJson(c.colorMatrix)}});
+        }
         j["interpolation"] = {{"from", r.idts[size_t(r.interpolateFrom)].light},
                               {"to", r.idts[size_t(r.interpolateTo)].light},
                               {"set", r.testName},
+                              {"count", r.testCount},
+                              {"interpolated", "color_matrix"},
+                              {"beyond_pair", "extrapolated"},
+                              {"calibrations", calibrations},
                               {"curve", curve}};
     }
     if (r.chart)
@@ -657,16 +692,26 @@ std::string IdtReport(const IdtResult& r)
     }
     if (r.interpolateFrom >= 0)
     {
-        o << "\nInterpolated in mired between " << r.idts[size_t(r.interpolateFrom)].light
-          << " and " << r.idts[size_t(r.interpolateTo)].light << ", against an IDT fitted at each "
-          << "CCT, on " << r.testName
-          << " (dE00; beyond the pair the mired line is extrapolated, DNG clamps):\n"
-             "  CCT K   vs fitted mean  max    interpolated  fitted  DNG-clamped\n";
+        const IdtCalibration& a = r.interpolateCalibrations[0];
+        const IdtCalibration& b = r.interpolateCalibrations[1];
+        o << "\nInterpolated as DNG does between " << r.idts[size_t(r.interpolateFrom)].light
+          << " (" << Fixed(a.cct, 0) << " K) and " << r.idts[size_t(r.interpolateTo)].light << " ("
+          << Fixed(b.cct, 0)
+          << " K): the colour matrix (XYZ to raw) in mired, extrapolated beyond the pair; the "
+             "white balance from the camera's response to each light; "
+          << r.adaptation << " to the working white.\n"
+          << "dE00 on " << r.testName << " (" << r.testCount
+          << ", fitted on by no IDT): the interpolated IDT's output against that of an IDT "
+             "fitted at each CCT, and each IDT against the truth (DNG clamps to the pair):\n"
+             "         interpolated vs fitted there   against the truth\n"
+             "  CCT K    mean    p95    max  clamped   interpolated  fitted  clamped\n";
         for (const IdtInterpolationPoint& p : r.interpolation)
         {
-            o << "  " << Fixed(p.cct, 0) << "    " << Fixed(p.meanVsDirect, 3) << "         "
-              << Fixed(p.maxVsDirect, 3) << "  " << Fixed(p.interpolatedMean, 3) << "         "
-              << Fixed(p.directMean, 3) << "   " << Fixed(p.clampedMean, 3) << "\n";
+            o << std::setw(7) << Fixed(p.cct, 0) << std::setw(8) << Fixed(p.meanVsDirect, 3)
+              << std::setw(7) << Fixed(p.p95VsDirect, 3) << std::setw(7) << Fixed(p.maxVsDirect, 3)
+              << std::setw(9) << Fixed(p.clampedMeanVsDirect, 3) << std::setw(15)
+              << Fixed(p.interpolatedMean, 3) << std::setw(8) << Fixed(p.directMean, 3)
+              << std::setw(9) << Fixed(p.clampedMean, 3) << "\n";
         }
     }
     return o.str();

@@ -30,8 +30,9 @@ struct IdtRequest
     std::string training;
     /// The second set errors are measured on.
     std::string testSet = defaults::IDT_TEST_SET;
-    /// Two lights to fit and interpolate between by inverse CCT (the line
-    /// in mired extrapolated beyond the pair; DNG's clamp reported beside).
+    /// Two lights to fit and interpolate between as DNG does (InterpolateIdt:
+    /// the colour matrix in mired, extrapolated beyond the pair, DNG's clamp
+    /// reported beside; white balance and CAT for each light).
     std::vector<std::string> interpolate;
     /// The camera's as-shot neutral (raw R, G, B; any scale), or empty.
     std::vector<double> asShotNeutral;
@@ -68,13 +69,18 @@ struct IdtEntry
     std::string colorSpace;        ///< its colour space in the config ("" none)
 };
 
-/// The interpolated IDT at one colour temperature against one fitted there.
+/// The interpolated IDT at one colour temperature against one fitted there,
+/// ΔE00 on the test set (L*a*b* relative to the working white).
 struct IdtInterpolationPoint
 {
-    double cct = 0.0;
-    double meanVsDirect = 0.0;  ///< mean ΔE00 of the interpolated IDT's output vs the direct one's
+    double cct = 0.0;  ///< K, the nominal temperature of the light (IdtLightForCct)
+    /// The interpolated IDT's output against the fitted IDT's, same
+    /// balanced camera RGB: mean, p95 (nearest rank) and max.
+    double meanVsDirect = 0.0;
+    double p95VsDirect = 0.0;
     double maxVsDirect = 0.0;
-    double interpolatedMean = 0.0;  ///< mean ΔE00 against the truth
+    double clampedMeanVsDirect = 0.0;  ///< the same mean with DNG's clamp to the pair
+    double interpolatedMean = 0.0;     ///< mean ΔE00 against the truth
     double directMean = 0.0;
     double clampedMean = 0.0;  ///< mean ΔE00 against the truth with DNG's clamp to the pair
 };
@@ -95,6 +101,7 @@ struct IdtResult
     /// --interpolate: the pair (indices into idts) and the sweep.
     int interpolateFrom = -1;
     int interpolateTo = -1;
+    IdtCalibration interpolateCalibrations[2];  ///< the colour matrices interpolated
     std::vector<IdtInterpolationPoint> interpolation;
     bool chart = false;        ///< fitted from a chart
     std::string chartNeutral;  ///< the chart patch that set the white balance
@@ -120,6 +127,5 @@ std::string IdtDocument(const IdtResult& result);
 
 /// The text report of a result.
 std::string IdtReport(const IdtResult& result);
-
 
 }  // namespace bandlight::jobs

@@ -215,6 +215,7 @@ IdtProblem::IdtProblem(const SpectralCamera& camera, const Spectrum& light, cons
     : m_shot(camera, light),
       m_eye(light, working, observer),
       m_balance(BalanceMatrix(light, working, adaptation, observer)),
+      m_adaptation(adaptation),
       m_labWhite(WorkingWhiteXyz(working)),
       m_whiteXyz(m_eye.rgbToXyz() * m_eye.white())
 {
@@ -308,13 +309,52 @@ IdtFit FitIdtOptimal(const IdtProblem& problem, const std::vector<NamedSpectrum>
                  cameraLabel);
 }
 
-Mat3 InterpolateIdt(const Mat3& m1, double cct1, const Mat3& m2, double cct2, double cct,
-                    bool extrapolate)
+double MiredWeight(double cct1, double cct2, double cct, bool extrapolate)
 {
     const double g1 = 1.0 / cct1, g2 = 1.0 / cct2, g = 1.0 / cct;
     const double line = std::abs(g1 - g2) < 1e-15 ? 1.0 : (g - g2) / (g1 - g2);
-    const double w = extrapolate ? line : std::clamp(line, 0.0, 1.0);
-    return w * m1 + (1.0 - w) * m2;
+    return extrapolate ? line : std::clamp(line, 0.0, 1.0);
+}
+
+IdtCalibration CalibrationOf(const IdtProblem& problem, const IdtFit& fit)
+{
+    // Raw → XYZ under the light: the fit lands balanced colours in working
+    // RGB; BalanceMatrix's CAT undone gives the colour under the light.
+    const Mat3 cat =
+        AdaptationMatrix(problem.whiteXyz(), problem.workingWhiteXyz(), problem.adaptation());
+    const Mat3 rawToXyz = cat.inverse() * problem.rgbToXyz() * fit.matrix * fit.gains.asDiagonal();
+    if (!rawToXyz.allFinite() || std::abs(rawToXyz.determinant()) < 1e-12)
+    {
+        throw Exception("an IDT to interpolate is singular: its camera has no colour matrix");
+    }
+    IdtCalibration c;
+    c.cct = ComputeCct(problem.whiteXyz()).cctK;
+    c.colorMatrix = rawToXyz.inverse();
+    // DNG SDK, NormalizeColorMatrix: the connection space's white → a
+    // camera neutral whose largest channel is 1.
+    c.colorMatrix /= (c.colorMatrix * problem.workingWhiteXyz()).maxCoeff();
+    return c;
+}
+
+Mat3 InterpolateIdt(const IdtCalibration& c1, const IdtCalibration& c2, const IdtProblem& target,
+                    bool extrapolate)
+{
+    const double cct = ComputeCct(target.whiteXyz()).cctK;
+    const double w = MiredWeight(c1.cct, c2.cct, cct, extrapolate);
+    const Mat3 colorMatrix = w * c1.colorMatrix + (1.0 - w) * c2.colorMatrix;
+    if (!colorMatrix.allFinite() || std::abs(colorMatrix.determinant()) < 1e-12)
+    {
+        throw Exception("the colour matrix interpolated to " + std::to_string(std::lround(cct)) +
+                        " K is singular");
+    }
+    const Mat3 cameraToXyz = colorMatrix.inverse();
+    // The raw neutral of the target light (balanced (1, 1, 1) undone), the
+    // white it stands for through the interpolated matrix, and that white
+    // adapted to the working white: white in, working white out.
+    const Vec3 neutral = target.gains().cwiseInverse();
+    const Vec3 white = cameraToXyz * neutral;
+    const Mat3 cat = AdaptationMatrix(white, target.workingWhiteXyz(), target.adaptation());
+    return target.rgbToXyz().inverse() * cat * cameraToXyz * neutral.asDiagonal();
 }
 
 AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,

@@ -71,6 +71,14 @@ public:
     ColourFit data(const std::vector<NamedSpectrum>& set) const;
     /// The light's white in CIE XYZ (Y = 1), as the observer sees it.
     Vec3 whiteXyz() const { return m_whiteXyz; }
+    /// The working white in CIE XYZ (Y = 1): where the balance takes the
+    /// light's white, and the L*a*b* reference white of the errors.
+    Vec3 workingWhiteXyz() const { return m_labWhite; }
+    /// Working RGB → CIE XYZ, as the observer sees the working primaries.
+    Mat3 rgbToXyz() const { return m_eye.rgbToXyz(); }
+    /// The chromatic adaptation that balances the light's white to the
+    /// working white.
+    AdaptationMethod adaptation() const noexcept { return m_adaptation; }
     /// ΔE00 of `idt` (balanced camera RGB → working RGB) against the
     /// targets over `set`, L*a*b* relative to the working white.
     IdtError errors(const Mat3& idt, const std::vector<NamedSpectrum>& set,
@@ -83,6 +91,7 @@ private:
     CameraShot m_shot;
     SurfaceRenderer m_eye;
     Mat3 m_balance;
+    AdaptationMethod m_adaptation;
     Vec3 m_labWhite;
     Vec3 m_whiteXyz;
 };
@@ -107,14 +116,49 @@ struct IdtFit
 IdtFit FitIdtOptimal(const IdtProblem& problem, const std::vector<NamedSpectrum>& training = {},
                      const std::string& cameraLabel = "camera");
 
-/// DNG-style interpolation between two IDTs by inverse colour temperature
+/// DNG's interpolation weight of the first of two calibrations at `cct`
 /// (Adobe DNG Specification 1.6, "Mapping Camera Color Space to CIE XYZ
-/// Space"): weight g = (1/T − 1/T2) / (1/T1 − 1/T2), result
-/// g·M1 + (1 − g)·M2. DNG clamps g to [0, 1] (the nearer IDT outside the
-/// pair); with `extrapolate` the line in mired goes on beyond the pair.
-/// Both matrices keep white, so the result does.
-Mat3 InterpolateIdt(const Mat3& m1, double cct1, const Mat3& m2, double cct2, double cct,
-                    bool extrapolate = false);
+/// Space"): g = (1/T − 1/T2) / (1/T1 − 1/T2), linear in inverse colour
+/// temperature (mired). DNG clamps g to [0, 1] (the nearer calibration
+/// outside the pair); with `extrapolate` the line in mired goes on beyond
+/// the pair. 1 when the two temperatures are equal. Temperatures in K.
+double MiredWeight(double cct1, double cct2, double cct, bool extrapolate);
+
+/// A camera's characterisation under one light, as a DNG file carries it
+/// (ColorMatrixN for CalibrationIlluminantN): what is interpolated between
+/// two lights, because it varies slowly with the light, while the white
+/// balance and the chromatic adaptation are worked out for the light at
+/// hand.
+struct IdtCalibration
+{
+    double cct = 0.0;  ///< K, of the light's white (CIE 15:2004 §9.5)
+    /// CIE XYZ under the light → raw camera RGB (DNG's ColorMatrix),
+    /// scaled as the DNG SDK's NormalizeColorMatrix scales it: the working
+    /// white (where DNG takes D50, the white of its connection space) gives
+    /// a camera neutral whose largest channel is 1. Without that common scale the
+    /// two matrices' weights would depend on each light's brightness.
+    Mat3 colorMatrix = Mat3::Identity();
+};
+
+/// The characterisation an IDT fitted for `problem`'s light stands for:
+/// raw camera RGB → diag(gains) → fit.matrix → working RGB → XYZ, the
+/// balance to the working white undone (CAT⁻¹), inverted and scaled as
+/// IdtCalibration::colorMatrix says. Throws Exception for a singular IDT.
+IdtCalibration CalibrationOf(const IdtProblem& problem, const IdtFit& fit);
+
+/// The IDT (balanced camera RGB → working RGB, as IdtFit::matrix) for the
+/// light of `target`, between two calibrations as DNG maps camera colour to
+/// XYZ: the colour matrix interpolated in mired by the CCT of the target
+/// light's white (MiredWeight), the white balance the camera's own response
+/// to that light (IdtProblem::gains: known from the sensitivities, where a
+/// raw developer reads the as-shot neutral), and the white that neutral
+/// stands for through the interpolated matrix adapted to the working white
+/// by the target's chromatic adaptation (CAT02 as rawtoaces). White
+/// (1, 1, 1) goes to (1, 1, 1) at every temperature, and at a calibration's
+/// own light the result is the IDT it came from (to rounding). Throws
+/// Exception when the interpolated matrix is singular.
+Mat3 InterpolateIdt(const IdtCalibration& c1, const IdtCalibration& c2, const IdtProblem& target,
+                    bool extrapolate);
 
 /// What a camera's as-shot neutral says about the light.
 struct AsShotEstimate

@@ -92,6 +92,13 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
             i[key] = array(i[key], "dtype"_a = "float64");
         }
     }
+    if (doc.contains("interpolation"))
+    {
+        for (const py::handle c : doc["interpolation"]["calibrations"].cast<py::list>())
+        {
+            c["color_matrix"] = array(c["color_matrix"], "dtype"_a = "float64");
+        }
+    }
     const std::string written = !r.config.empty() ? r.config : r.out;
     doc["config"] = written.empty() ? py::object(py::none())
                                     : py::module_::import("PyOpenColorIO")
@@ -140,8 +147,13 @@ document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
   the training set and the test set), "colorspace" (with a config)};
 - "as_shot" with as_shot_neutral: {"cct", "duv", "nearest", "family",
   "family_kelvin", "light"} (the IDT for it is the last of "idts");
-- "interpolation" with interpolate: the IDT interpolated in mired between
-  the two lights against one fitted at each CCT, 2800-6500 K;
+- "interpolation" with interpolate: the IDT interpolated between the two
+  lights as DNG does (their "calibrations": {"light", "cct", "color_matrix"},
+  XYZ -> raw as numpy arrays, interpolated in mired; white balance and CAT
+  for each light) against one fitted at each CCT, 2800-6500 K, on the test
+  set: "curve" [{"cct", "mean_vs_direct", "p95_vs_direct", "max_vs_direct",
+  "dng_clamped_mean_vs_direct", "interpolated_mean", "direct_mean",
+  "dng_clamped_mean"}] (CIEDE2000);
 - "chart" with chart_rgb: {"patches", "neutral_patch"}, and with rootpoly=2
   or 3 "rootpoly": {"degree", "matrix", "error"}, a root polynomial fitted
   on the chart (exposure invariant);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight idt` as a user runs it: an ociocheck-clean config, the
 // interpolation curve and the as-shot neutral read back from its JSON.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -53,11 +54,41 @@ TEST_CASE("idt --config writes a config ociocheck passes, with one input space p
     }
 }
 
-TEST_CASE("idt --interpolate: the mired line stays within 0.3 dE00 of IDTs fitted at each CCT",
-          "[cli][idt]")
+TEST_CASE(
+    "idt --interpolate: the DNG interpolation stays within 0.3 dE00 of IDTs fitted at each CCT",
+    "[cli][idt]")
 {
     const nlohmann::json j = Json("--interpolate 3200K,5600K");
-    const nlohmann::json& curve = j["interpolation"]["curve"];
+    const nlohmann::json& in = j["interpolation"];
+    CHECK(in["from"] == "3200K");
+    CHECK(in["to"] == "5600K");
+    CHECK(in["set"] == "TCS");
+    CHECK(in["count"] == 15);
+    CHECK(in["interpolated"] == "color_matrix");
+    CHECK(in["beyond_pair"] == "extrapolated");
+    REQUIRE(in["calibrations"].size() == 2);
+    CHECK(in["calibrations"][0]["light"] == "3200K");
+    CHECK(in["calibrations"][0]["cct"].get<double>() == Approx(3200.0).epsilon(1e-4));
+    // The DNG SDK's normalisation: the working white gives a raw neutral
+    // whose largest channel is 1 (ACES white x 0.32168, y 0.33767,
+    // SMPTE ST 2065-1).
+    const double white[3] = {0.32168 / 0.33767, 1.0, (1.0 - 0.32168 - 0.33767) / 0.33767};
+    for (const nlohmann::json& c : in["calibrations"])
+    {
+        REQUIRE(c["color_matrix"].size() == 3);
+        double largest = 0.0;
+        for (int row = 0; row < 3; ++row)
+        {
+            double raw = 0.0;
+            for (int col = 0; col < 3; ++col)
+            {
+                raw += c["color_matrix"][row][col].get<double>() * white[col];
+            }
+            largest = std::max(largest, raw);
+        }
+        CHECK(largest == Approx(1.0).epsilon(1e-9));
+    }
+    const nlohmann::json& curve = in["curve"];
     REQUIRE(curve.size() == 38);  // 2800–6500 K every 100 K
     CHECK(curve.front()["cct"] == 2800.0);
     CHECK(curve.back()["cct"] == 6500.0);
@@ -66,6 +97,15 @@ TEST_CASE("idt --interpolate: the mired line stays within 0.3 dE00 of IDTs fitte
         INFO(p.dump());
         CHECK(std::abs(p["interpolated_mean"].get<double>() - p["direct_mean"].get<double>()) <
               0.3);
+        // The strict reading: the two IDTs' outputs on the same plate.
+        CHECK(p["mean_vs_direct"].get<double>() <= 0.3);
+        CHECK(p["p95_vs_direct"].get<double>() >= p["mean_vs_direct"].get<double>());
+        CHECK(p["max_vs_direct"].get<double>() >= p["p95_vs_direct"].get<double>());
+        CHECK(p["dng_clamped_mean_vs_direct"].get<double>() >= 0.0);
+        if (p["cct"] == 3200.0 || p["cct"] == 5600.0)
+        {
+            CHECK(p["max_vs_direct"].get<double>() < 1e-6);
+        }
     }
     CHECK(j["idts"].size() == 2);
 }

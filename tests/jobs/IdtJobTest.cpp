@@ -180,3 +180,44 @@ colorspaces:
     const Mat3 got = SpaceMatrix(ext, e.colorSpace, "lin");
     CHECK((got - expected).cwiseAbs().maxCoeff() < 1e-6 * expected.cwiseAbs().maxCoeff());
 }
+
+TEST_CASE("idt --interpolate: within 0.3 dE00 of the fitted IDT at every CCT, for both cameras",
+          "[jobs][idt]")
+{
+    // rawtoaces' two cameras, 3200 K and 5600 K calibrations, measured on
+    // the CIE test colours (fitted on by no IDT) over 2800–6500 K.
+    for (const std::string& camera :
+         {kD21, std::string(BANDLIGHT_TEST_DATA_ROOT "/rawtoaces/nikon_d200_380_780_5.json")})
+    {
+        jobs::IdtRequest r;
+        r.camera = camera;
+        r.interpolate = {"3200K", "5600K"};
+        const jobs::IdtResult result = jobs::MakeIdt(r);
+        REQUIRE(result.interpolation.size() == 38);
+        for (const jobs::IdtInterpolationPoint& p : result.interpolation)
+        {
+            INFO(result.camera << " " << p.cct << " K");
+            CHECK(p.meanVsDirect <= 0.3);
+            CHECK(p.p95VsDirect >= p.meanVsDirect);
+            CHECK(p.maxVsDirect >= p.p95VsDirect);
+        }
+        const std::string report = jobs::IdtReport(result);
+        CHECK_THAT(report, Contains("dE00 on TCS (15, fitted on by no IDT)"));
+        CHECK_THAT(report, Contains("colour matrix (XYZ to raw) in mired"));
+        // The JSON's colour matrices are the calibrations interpolated.
+        const nlohmann::json j = nlohmann::json::parse(jobs::IdtDocument(result));
+        for (int end = 0; end < 2; ++end)
+        {
+            const nlohmann::json& c = j["interpolation"]["calibrations"][end];
+            CHECK(c["cct"].get<double>() == result.interpolateCalibrations[end].cct);
+            for (int row = 0; row < 3; ++row)
+            {
+                for (int col = 0; col < 3; ++col)
+                {
+                    CHECK(c["color_matrix"][row][col].get<double>() ==
+                          result.interpolateCalibrations[end].colorMatrix(row, col));
+                }
+            }
+        }
+    }
+}

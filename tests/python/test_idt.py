@@ -49,6 +49,22 @@ def test_idt_refuses_a_zero_neutral():
         bandlight.idt(D21, interpolate=["3200K"])
 
 
+def test_interpolated_idt_stays_near_the_fitted_one():
+    # The D21's 3200 K and 5600 K calibrations; the curve as the command's.
+    doc = bandlight.idt(D21, interpolate="3200K,5600K")
+    section = doc["interpolation"]
+    assert section["set"] == "TCS" and section["interpolated"] == "color_matrix"
+    lights = [c["light"] for c in section["calibrations"]]
+    assert lights == ["3200K", "5600K"]
+    for c in section["calibrations"]:
+        assert isinstance(c["color_matrix"], np.ndarray) and c["color_matrix"].shape == (3, 3)
+    curve = section["curve"]
+    assert [p["cct"] for p in curve] == list(range(2800, 6501, 100))
+    assert all(p["mean_vs_direct"] <= 0.3 for p in curve)
+    command = cli_json("idt", "--camera", D21, "--interpolate", "3200K,5600K", "--json", "-")
+    assert curve == command["interpolation"]["curve"]
+
+
 def _rows(path):
     return [l.split(",") for l in path.read_text().splitlines()
             if l.strip() and not l.startswith("#") and l[0].isdigit()]

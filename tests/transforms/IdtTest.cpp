@@ -205,68 +205,130 @@ TEST_CASE("The first-order fit sits near the optimum, as the accuracy report fou
     CHECK(fit.rmsDe76 == Approx(3.06).margin(0.01));
 }
 
-TEST_CASE("DNG interpolation in mired between 3200 K and 5600 K stays within 0.3 dE00",
+TEST_CASE("DNG's weight is linear in mired, clamped to the pair unless extrapolated",
           "[transforms][idt]")
 {
-    const SpectralCamera camera = D21();
-    const RgbSpace& aces = FindRgbSpace("aces2065-1");
-    const auto fitAt = [&](double k)
-    { return FitIdtOptimal(IdtProblem(camera, IdtLightForCct(k), aces, AdaptationMethod::CAT02)); };
-    const IdtFit low = fitAt(3200.0), high = fitAt(5600.0);
-    CHECK((InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, 3200.0) - low.matrix).norm() ==
-          0.0);
-    CHECK((InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, 5600.0) - high.matrix).norm() <
-          1e-15);
+    CHECK(MiredWeight(3200.0, 5600.0, 3200.0, false) == 1.0);
+    CHECK(MiredWeight(3200.0, 5600.0, 5600.0, false) == 0.0);
+    // 4073 K is halfway in mired: 1e6/4073 = (312.5 + 178.57) / 2.
+    CHECK(MiredWeight(3200.0, 5600.0, 1e6 / ((1e6 / 3200.0 + 1e6 / 5600.0) / 2.0), false) ==
+          Approx(0.5).epsilon(1e-12));
     // DNG clamps outside the pair; extrapolated, the mired line goes on.
-    CHECK((InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, 2800.0) - low.matrix).norm() ==
-          0.0);
-    CHECK((InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, 2800.0, true) - low.matrix)
-              .norm() > 1e-3);
-    // Measured on the CIE test colours, which no IDT is fitted on.
-    const std::vector<NamedSpectrum>& test = TestColourSamples();
-    double worstExcess = 0.0, worstInside = 0.0, worstClamped = 0.0;
-    for (double k = 2800.0; k <= 6500.0; k += 100.0)
+    CHECK(MiredWeight(3200.0, 5600.0, 2800.0, false) == 1.0);
+    CHECK(MiredWeight(3200.0, 5600.0, 6500.0, false) == 0.0);
+    CHECK(MiredWeight(3200.0, 5600.0, 2800.0, true) ==
+          Approx((1 / 2800.0 - 1 / 5600.0) / (1 / 3200.0 - 1 / 5600.0)));
+    CHECK(MiredWeight(3200.0, 5600.0, 6500.0, true) < 0.0);
+    CHECK(MiredWeight(4000.0, 4000.0, 6500.0, true) == 1.0);
+}
+
+TEST_CASE("A colorimetric camera's IDT interpolates exactly, beyond the pair too",
+          "[transforms][idt]")
+{
+    // Its colour matrix is the same under every light (raw RGB is XYZ), so
+    // the white balance and CAT02 of each light give the exact IDT.
+    const SpectralCamera observer(ObserverCamera());
+    const RgbSpace& aces = FindRgbSpace("aces2065-1");
+    const auto problemAt = [&](double k)
+    { return IdtProblem(observer, IdtLightForCct(k), aces, AdaptationMethod::CAT02); };
+    const IdtCalibration low = CalibrationOf(problemAt(3200.0), FitIdtOptimal(problemAt(3200.0)));
+    const IdtCalibration high = CalibrationOf(problemAt(5600.0), FitIdtOptimal(problemAt(5600.0)));
+    CHECK((low.colorMatrix - high.colorMatrix).cwiseAbs().maxCoeff() < 1e-9);
+    for (const double k : {2800.0, 4500.0, 6500.0})
     {
-        const IdtProblem problem(camera, IdtLightForCct(k), aces, AdaptationMethod::CAT02);
-        const IdtFit direct = FitIdtOptimal(problem);
-        const double directMean = problem.errors(direct.matrix, test, "TCS").mean;
+        const IdtProblem problem = problemAt(k);
+        INFO(k << " K");
+        CHECK((InterpolateIdt(low, high, problem, true) - FitIdtOptimal(problem).matrix)
+                  .cwiseAbs()
+                  .maxCoeff() < 1e-8);
+    }
+}
+
+TEST_CASE("DNG interpolation between 3200 K and 5600 K stays within 0.3 dE00 of the fitted IDT",
+          "[transforms][idt]")
+{
+    const RgbSpace& aces = FindRgbSpace("aces2065-1");
+    // Measured on the CIE test colours, which no IDT is fitted on; the
+    // worst means over 2800–6500 K, extrapolated beyond the pair (as
+    // `idt --interpolate` prints them).
+    struct Case
+    {
+        SpectralCamera camera;
+        double worstMean;
+    };
+    for (const Case& c :
+         {Case{D21(), 0.157},
+          Case{SpectralCamera(ReadCameraFile(kRawtoaces + "/nikon_d200_380_780_5.json")), 0.273}})
+    {
+        const auto problemAt = [&](double k)
+        { return IdtProblem(c.camera, IdtLightForCct(k), aces, AdaptationMethod::CAT02); };
+        const IdtProblem lowProblem = problemAt(3200.0), highProblem = problemAt(5600.0);
+        const IdtFit lowFit = FitIdtOptimal(lowProblem), highFit = FitIdtOptimal(highProblem);
+        const IdtCalibration low = CalibrationOf(lowProblem, lowFit);
+        const IdtCalibration high = CalibrationOf(highProblem, highFit);
+        // At its own light each calibration gives back its IDT (to rounding:
+        // it is rebuilt through the colour matrix and CAT02).
         for (const bool extrapolate : {false, true})
         {
-            const Mat3 m = InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, k, extrapolate);
-            // What interpolating costs: its error beyond the direct fit's.
-            const double excess = problem.errors(m, test, "TCS").mean - directMean;
-            if (!extrapolate)
+            CHECK((InterpolateIdt(low, high, lowProblem, extrapolate) - lowFit.matrix)
+                      .cwiseAbs()
+                      .maxCoeff() < 1e-13);
+            CHECK((InterpolateIdt(low, high, highProblem, extrapolate) - highFit.matrix)
+                      .cwiseAbs()
+                      .maxCoeff() < 1e-13);
+        }
+        const std::vector<NamedSpectrum>& test = TestColourSamples();
+        double worst = 0.0, worstClamped = 0.0, worstExcess = 0.0, worstBalanced = 0.0;
+        for (double k = 2800.0; k <= 6500.0; k += 100.0)
+        {
+            INFO(c.camera.name() << " " << k << " K");
+            const IdtProblem problem = problemAt(k);
+            const IdtFit direct = FitIdtOptimal(problem);
+            const ColourFit d = problem.data(test);
+            // Mean ΔE00 of an IDT's output against the fitted IDT's, same plate.
+            const auto vsDirect = [&](const Mat3& m)
             {
-                // DNG's clamp costs more outside the pair (0.50 at 2800 K).
-                worstClamped = std::max(worstClamped, std::abs(excess));
-                continue;
-            }
-            INFO(k << " K");
+                double mean = 0.0;
+                for (const Vec3& in : d.input)
+                {
+                    mean += DeltaE2000(XyzToLab(d.rgbToXyz * (m * in), d.labWhite),
+                                       XyzToLab(d.rgbToXyz * (direct.matrix * in), d.labWhite)) /
+                            double(d.input.size());
+                }
+                return mean;
+            };
+            const Mat3 m = InterpolateIdt(low, high, problem, true);
+            const Mat3 clamped = InterpolateIdt(low, high, problem, false);
+            // White in, working white out, at every temperature.
+            CHECK((m * Vec3::Ones() - Vec3::Ones()).cwiseAbs().maxCoeff() < 1e-13);
+            CHECK((clamped * Vec3::Ones() - Vec3::Ones()).cwiseAbs().maxCoeff() < 1e-13);
+            const double mean = vsDirect(m);
+            CHECK(mean <= 0.3);
+            worst = std::max(worst, mean);
+            worstClamped = std::max(worstClamped, vsDirect(clamped));
+            // What interpolating costs against the truth: its error beyond
+            // the direct fit's.
+            const double excess = problem.errors(m, test, "TCS").mean -
+                                  problem.errors(direct.matrix, test, "TCS").mean;
             CHECK(excess < 0.3);
             CHECK(excess > -0.3);
             worstExcess = std::max(worstExcess, std::abs(excess));
+            // The balanced IDTs themselves on the mired line (white balance
+            // and CAT folded in, as DNG's ForwardMatrix).
+            const double w =
+                MiredWeight(low.cct, high.cct, ComputeCct(problem.whiteXyz()).cctK, true);
+            worstBalanced =
+                std::max(worstBalanced, vsDirect(w * lowFit.matrix + (1.0 - w) * highFit.matrix));
         }
-        if (k >= 3200.0 && k <= 5600.0)
-        {
-            // Between the pair the two IDTs' outputs themselves agree.
-            const Mat3 m = InterpolateIdt(low.matrix, 3200.0, high.matrix, 5600.0, k);
-            const ColourFit d = problem.data(test);
-            double mean = 0.0;
-            for (const Vec3& c : d.input)
-            {
-                mean += DeltaE2000(XyzToLab(d.rgbToXyz * (m * c), d.labWhite),
-                                   XyzToLab(d.rgbToXyz * (direct.matrix * c), d.labWhite));
-            }
-            mean /= double(d.input.size());
-            CHECK(mean < 0.3);
-            worstInside = std::max(worstInside, mean);
-        }
+        std::cout << c.camera.name() << ", 3200K-5600K colour-matrix interpolation, 2800-6500 K: "
+                  << "worst mean dE00 to the fitted IDT " << worst
+                  << " (clamped as DNG: " << worstClamped
+                  << "; the balanced IDTs interpolated: " << worstBalanced
+                  << "); worst excess over the fitted IDT's error " << worstExcess << "\n";
+        CHECK(worst == Approx(c.worstMean).margin(0.0005));
+        // Extrapolating the colour matrix beats DNG's clamp at the ends.
+        CHECK(worstClamped > worst);
     }
-    std::cout << "D21, 3200K-5600K interpolation, 2800-6500 K: worst excess mean dE00 "
-              << worstExcess << " (clamped as DNG: " << worstClamped
-              << "); between the pair, worst mean dE00 to the direct fit " << worstInside << "\n";
-    CHECK(worstInside > 0.0);
-    CHECK(worstClamped > worstExcess);
 }
 
 TEST_CASE("An as-shot neutral gives the light's CCT within 1 % and Duv within 0.001",
