@@ -315,13 +315,16 @@ Spectrum IdtDaylight(const AccuracyOptions& o)
     return o.idtLight.empty() ? BuiltinIlluminant(o.idtLightName) : o.idtLight;
 }
 
-/// One pair of lights and the colours seen under each.
+/// One pair of lights and the colours seen under each. The renderers are
+/// the caller's locals, not members: Eigen picks a small product's packet
+/// path by its operands' run-time alignment, so where a renderer lives can
+/// move a figure's last bit, and the report and JSON are kept bit for bit.
 struct LightPair
 {
     const Light& from;
     const Light& to;
-    SurfaceRenderer r1;  ///< under `from`
-    SurfaceRenderer r2;  ///< under `to`
+    const SurfaceRenderer& r1;  ///< under `from`
+    const SurfaceRenderer& r2;  ///< under `to`
 };
 
 /// The plates one simulation kind delivers (before exposure), per set.
@@ -582,8 +585,9 @@ void MeasureMethod(const Run& run, const LightPair& pair, const PairPlates& pp,
 void MeasurePair(const Run& run, const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
 {
     const AccuracyOptions& o = run.options;
-    const LightPair pair{from, to, SurfaceRenderer(from.spectrum, run.working, o.observer),
-                         SurfaceRenderer(to.spectrum, run.working, o.observer)};
+    const SurfaceRenderer r1(from.spectrum, run.working, o.observer);
+    const SurfaceRenderer r2(to.spectrum, run.working, o.observer);
+    const LightPair pair{from, to, r1, r2};
     for (const Plates& plates : o.plates)
     {
         const PairPlates pp = MakePairPlates(plates, from, to, pair.r2, run.working, o.observer);
