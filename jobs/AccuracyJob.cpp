@@ -44,32 +44,33 @@ double NativeCost(const std::vector<CostRow>& cost, const std::string& method)
     return ns;
 }
 
-/// Accuracy against cost: one series per reflectance set (its mean over
-/// every pair at its worst exposure, as shipped, first plate convention),
-/// the native root polynomials beside their LUTs, the Pareto front of the
-/// held-out set (or the first set) joined, and one label per method placed
-/// where no label overlaps another (PlaceLabels).
-void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outputs)
+/// One point of the accuracy-against-cost plot: a method's cost and its
+/// mean ΔE00 on each set.
+struct CostPoint
+{
+    std::string name;
+    double ns;
+    std::vector<double> de;  ///< one per set
+};
+
+/// Every method with a cost (the camera methods have none on the observer's
+/// plates) as shipped, at its worst exposure, and beside it its native map
+/// when it has one; by cost, then error.
+std::vector<CostPoint> PlotPoints(const AccuracyResult& result)
 {
     const AccuracyOptions& options = result.options;
     const std::string key = options.plates.front().key();
     const bool anyShipped = bool(options.shipped);
-    struct Point
-    {
-        std::string name;
-        double ns;
-        std::vector<double> de;  ///< one per set
-    };
-    std::vector<Point> pts;
+    std::vector<CostPoint> pts;
     for (const std::string& m : options.methods)
     {
         if (FindMethod(m).needsCamera || !result.costAllThreads.count(m))
         {
             continue;
         }
-        Point p{m, std::max(result.costAllThreads.at(m), 1e-3), {}};
+        CostPoint p{m, std::max(result.costAllThreads.at(m), 1e-3), {}};
         const double native = NativeCost(result.cost, m);
-        Point n{m + " (native)", std::max(native, 1e-3), {}};
+        CostPoint n{m + " (native)", std::max(native, 1e-3), {}};
         for (const ReflectanceSet& set : options.sets)
         {
             const Filter shippedF{1.0, anyShipped && !FindMethod(m).isReference(), key,
@@ -88,65 +89,69 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
         }
     }
     std::sort(pts.begin(), pts.end(),
-              [](const Point& a, const Point& b)
+              [](const CostPoint& a, const CostPoint& b)
               { return a.ns < b.ns || (a.ns == b.ns && a.de < b.de); });
-    // The set the labels and the Pareto front follow.
+    return pts;
+}
+
+/// The set the labels and the Pareto front follow: the held-out set, or
+/// the first.
+size_t AnchorSet(const std::vector<ReflectanceSet>& sets)
+{
     size_t anchor = 0;
-    for (size_t s = 0; s < options.sets.size(); ++s)
+    for (size_t s = 0; s < sets.size(); ++s)
     {
-        anchor = options.sets[s].name == HeldOutTcs().name ? s : anchor;
+        anchor = sets[s].name == HeldOutTcs().name ? s : anchor;
     }
-    std::vector<PlotPoint> plotted;
-    for (const Point& p : pts)
-    {
-        plotted.push_back({p.name, p.ns, p.de});
-    }
-    const PlotLayout layout = LayOutAccuracyPlot(plotted, anchor);
-    const std::vector<LabelRequest>& requests = layout.requests;
-    const std::vector<LabelBox>& boxes = layout.boxes;
-    const double xMin = layout.xMin, xMax = layout.xMax, yMax = layout.yMax;
+    return anchor;
+}
+
+/// The plot's datablock: index s holds set s's points; then the labels,
+/// the leader lines and the Pareto front.
+std::string PlotData(const std::vector<CostPoint>& pts, size_t sets, const PlotLayout& layout,
+                     size_t anchor)
+{
     std::ostringstream data;
     data.precision(9);
-    // index s: set s's points.
-    for (size_t s = 0; s < options.sets.size(); ++s)
+    for (size_t s = 0; s < sets; ++s)
     {
-        for (const Point& p : pts)
+        for (const CostPoint& p : pts)
         {
             data << p.ns << " " << p.de[s] << "\n";
         }
         data << "\n\n";
     }
-    // Then the labels (x, y, text) at their boxes' left middles.
-    const auto toX = [&](double f) { return layout.toX(f); };
+    // The labels (x, y, text) at their boxes' left middles.
     for (size_t i = 0; i < pts.size(); ++i)
     {
-        data << toX(boxes[i].left) << " " << (boxes[i].bottom + boxes[i].height / 2) * yMax << " "
+        const LabelBox& b = layout.boxes[i];
+        data << layout.toX(b.left) << " " << (b.bottom + b.height / 2) * layout.yMax << " "
              << GnuplotDataLabel(pts[i].name) << "\n";
     }
     data << "\n\n";
-    // Then a leader line from each moved label's point to its box.
+    // A leader line from each moved label's point to its box.
     bool anyLeader = false;
     for (size_t i = 0; i < pts.size(); ++i)
     {
-        const LabelRequest& r = requests[i];
-        const LabelBox& b = boxes[i];
+        const LabelRequest& r = layout.requests[i];
+        const LabelBox& b = layout.boxes[i];
         if (r.y >= b.bottom && r.y <= b.top())
         {
             continue;
         }
         anyLeader = true;
         const double edge = b.left >= r.x ? b.left : b.right();
-        data << pts[i].ns << " " << r.y * yMax << "\n"
-             << toX(edge) << " " << (b.bottom + b.height / 2) * yMax << "\n\n";
+        data << pts[i].ns << " " << r.y * layout.yMax << "\n"
+             << layout.toX(edge) << " " << (b.bottom + b.height / 2) * layout.yMax << "\n\n";
     }
     if (!anyLeader)
     {
-        data << xMax << " " << 0.0 << "\n";  // an empty index would stop gnuplot
+        data << layout.xMax << " " << 0.0 << "\n";  // an empty index would stop gnuplot
     }
     data << "\n\n";
-    // Then the Pareto front of the anchor set.
+    // The Pareto front of the anchor set.
     double best = 1e30;
-    for (const Point& p : pts)
+    for (const CostPoint& p : pts)
     {
         if (!p.de.empty() && p.de[anchor] < best)
         {
@@ -154,7 +159,14 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
             data << p.ns << " " << best << "\n";
         }
     }
-    const size_t labels = options.sets.size(), leaders = labels + 1, front = labels + 2;
+    return data.str();
+}
+
+/// The gnuplot script that draws PlotData's indices.
+std::string PlotScript(const std::vector<ReflectanceSet>& sets, const PlotLayout& layout,
+                       size_t anchor)
+{
+    const size_t labels = sets.size(), leaders = labels + 1, front = labels + 2;
     std::ostringstream script;
     script.precision(9);
     script << "set title "
@@ -168,23 +180,43 @@ void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outp
               "set key outside right top\n"
            << "set lmargin at screen " << kPlotLeft << "\nset rmargin at screen " << kPlotRight
            << "\nset bmargin at screen " << kPlotBottom << "\nset tmargin at screen " << kPlotTop
-           << "\nset xrange [" << xMin << ":" << xMax << "]\nset yrange [0:" << yMax << "]\n"
+           << "\nset xrange [" << layout.xMin << ":" << layout.xMax
+           << "]\nset yrange [0:" << layout.yMax << "]\n"
            << "plot $bandlight_data index " << front
            << " using 1:2 with lines lw 2 lc rgb '#2a7ab0' title "
-           << GnuplotQuote("Pareto front, " +
-                           (options.sets.empty() ? std::string() : options.sets[anchor].name))
+           << GnuplotQuote("Pareto front, " + (sets.empty() ? std::string() : sets[anchor].name))
            << ", \\\n     $bandlight_data index " << leaders
            << " using 1:2 with lines lw 1 lc rgb '#888888' notitle";
     const char* colours[] = {"#c0392b", "#27ae60", "#8e44ad", "#d35400", "#16a085", "#2c3e50"};
-    for (size_t s = 0; s < options.sets.size(); ++s)
+    for (size_t s = 0; s < sets.size(); ++s)
     {
         script << ", \\\n     $bandlight_data index " << s << " using 1:2 with points pt "
                << (5 + 2 * int(s % 4)) << " ps 1.3 lc rgb '" << colours[s % 6] << "' title "
-               << GnuplotQuote(options.sets[s].name);
+               << GnuplotQuote(sets[s].name);
     }
     script << ", \\\n     $bandlight_data index " << labels
            << " using 1:2:3 with labels left font ',10' notitle\n";
-    RunGnuplot(script.str(), data.str(), path, &outputs);
+    return script.str();
+}
+
+/// Accuracy against cost: one series per reflectance set (its mean over
+/// every pair at its worst exposure, as shipped, first plate convention),
+/// the native root polynomials beside their LUTs, the Pareto front of the
+/// held-out set (or the first set) joined, and one label per method placed
+/// where no label overlaps another (PlaceLabels).
+void Plot(const std::string& path, const AccuracyResult& result, OutputSet& outputs)
+{
+    const std::vector<ReflectanceSet>& sets = result.options.sets;
+    const std::vector<CostPoint> pts = PlotPoints(result);
+    const size_t anchor = AnchorSet(sets);
+    std::vector<PlotPoint> plotted;
+    for (const CostPoint& p : pts)
+    {
+        plotted.push_back({p.name, p.ns, p.de});
+    }
+    const PlotLayout layout = LayOutAccuracyPlot(plotted, anchor);
+    RunGnuplot(PlotScript(sets, layout, anchor), PlotData(pts, sets.size(), layout, anchor), path,
+               &outputs);
 }
 
 /// Each method's cost as one would apply it to an image (all threads): its
@@ -216,42 +248,60 @@ std::map<std::string, double> CostAllThreads(const std::vector<CostRow>& cost)
     }
     return costAll;
 }
-}  // namespace
 
-ReflectanceSet ReflectanceSetFromFile(const std::string& path)
+/// Accuracy rows as the JSON document's arrays; "camera" is the row's
+/// simulation kind (PlateSourceName).
+nlohmann::ordered_json RowsJson(const std::vector<AccuracyRow>& from)
 {
-    return {path, ReadSpectraFile(path)};
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (const AccuracyRow& r : from)
+    {
+        a.push_back({{"method", r.method},
+                     {"from", r.from},
+                     {"to", r.to},
+                     {"set", r.set},
+                     {"plates", r.plates},
+                     {"camera", PlateSourceName(r.source)},
+                     {"exposure", r.exposure},
+                     {"shipped", r.shipped},
+                     {"mean", r.mean},
+                     {"p95", r.p95},
+                     {"max", r.max},
+                     {"worst_sample", r.worstSample}});
+    }
+    return a;
 }
 
-AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
+/// Every output before the measurement: a run of minutes must not fail at
+/// its end for a folder that does not exist.
+void CheckOutputs(const AccuracyRequest& r)
 {
+    OutputPlan plan;
+    if (!r.json.empty())
     {
-        // Every output before the measurement: a run of minutes must not
-        // fail at its end for a folder that does not exist.
-        OutputPlan plan;
-        if (!r.json.empty())
-        {
-            plan.file("{json}", r.json);
-        }
-        if (!r.plot.empty())
-        {
-            CheckPlotPath(r.plot);
-            plan.file("{plot}", r.plot);
-        }
-        if (!r.heatmaps.empty())
-        {
-            plan.folder("{heatmaps}", r.heatmaps);
-        }
-        for (const std::string& image : r.images)
-        {
-            CheckImageInput(image);
-            plan.input(image);
-        }
-        plan.check();
+        plan.file("{json}", r.json);
     }
-    AccuracyResult result;
-    AccuracyOptions& options = result.options;
-    options = DefaultAccuracyOptions();
+    if (!r.plot.empty())
+    {
+        CheckPlotPath(r.plot);
+        plan.file("{plot}", r.plot);
+    }
+    if (!r.heatmaps.empty())
+    {
+        plan.folder("{heatmaps}", r.heatmaps);
+    }
+    for (const std::string& image : r.images)
+    {
+        CheckImageInput(image);
+        plan.input(image);
+    }
+    plan.check();
+}
+
+/// The working space, the observer and the pairs of lights: those given,
+/// the change of light an image was given for, or the defaults.
+void ChooseLights(const AccuracyRequest& r, AccuracyOptions& options)
+{
     options.workingSpace = r.workingSpace;
     FindRgbSpace(r.workingSpace);
     options.observer = ParseObserver(r.observer);
@@ -278,6 +328,13 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
             throw Exception("accuracy needs at least two illuminants");
         }
     }
+}
+
+/// The plate conventions, the camera that shoots them (with its methods
+/// when none are named) and the methods, the reference always among them.
+void ChoosePlatesAndMethods(const AccuracyRequest& r, Reporter& reporter, AccuracyResult& result)
+{
+    AccuracyOptions& options = result.options;
     if (!r.methods.empty())
     {
         options.methods = r.methods;
@@ -305,6 +362,22 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     {
         RequireCamera(ParseMethod(m), bool(options.camera));
     }
+}
+
+/// How the images are read: the request's, in the run's working space
+/// and observer.
+SpectralOptions ImageOptions(const AccuracyRequest& r)
+{
+    SpectralOptions imageOptions = r.imageOptions;
+    imageOptions.workingSpace = r.workingSpace;
+    imageOptions.observer = r.observer;
+    return imageOptions;
+}
+
+/// The sets of remittances: the default sets (unless left out), the files
+/// given, and each image's pixels.
+void ChooseSets(const AccuracyRequest& r, Reporter& reporter, AccuracyOptions& options)
+{
     if (!r.defaultSets)
     {
         options.sets.clear();
@@ -313,9 +386,7 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     {
         options.sets.push_back(s);
     }
-    SpectralOptions imageOptions = r.imageOptions;
-    imageOptions.workingSpace = r.workingSpace;
-    imageOptions.observer = r.observer;
+    const SpectralOptions imageOptions = ImageOptions(r);
     for (const std::string& image : r.images)
     {
         options.sets.push_back(
@@ -326,17 +397,57 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         throw ParameterError(
             "no reflectance sets to measure: give {reflectances}, or keep the default sets");
     }
-    if (!r.exposures.empty())
+}
+
+void ChooseExposures(const AccuracyRequest& r, AccuracyOptions& options)
+{
+    if (r.exposures.empty())
     {
-        for (const double k : r.exposures)
-        {
-            if (!(k > 0.0) || !std::isfinite(k))
-            {
-                throw ParameterError("{exposures} must be positive and finite");
-            }
-        }
-        options.exposures = r.exposures;
+        return;
     }
+    for (const double k : r.exposures)
+    {
+        if (!(k > 0.0) || !std::isfinite(k))
+        {
+            throw ParameterError("{exposures} must be positive and finite");
+        }
+    }
+    options.exposures = r.exposures;
+}
+
+/// The shipped form: the OCIO processor of the transform a config's look
+/// holds (guard + matrix, or shaper + 3D LUT + inverse shaper).
+ShippedFactory ShippedForms(const AccuracyOptions& options, int lutSize)
+{
+    const RgbSpace& working = FindRgbSpace(options.workingSpace);
+    const Observer observer = options.observer;
+    return [&working, observer, lutSize](const Light& from, const Light& to,
+                                         const MethodSpec& method) -> PixelBatch
+    {
+        const OCIO::ConstCPUProcessorRcPtr cpu =
+            OCIO::Config::CreateRaw()
+                ->getProcessor(
+                    IlluminantChangeTransform(from, to, method, working, observer, lutSize))
+                ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                           OCIO::OPTIMIZATION_DEFAULT);
+        return [cpu](float* rgb, size_t n)
+        {
+            OCIO::PackedImageDesc desc(rgb, long(n), 1, 3);
+            cpu->apply(desc);
+        };
+    };
+}
+
+/// The request checked and turned into what MeasureAccuracy measures, in
+/// the order the checks report their errors.
+void ResolveOptions(const AccuracyRequest& r, Reporter& reporter, AccuracyResult& result)
+{
+    AccuracyOptions& options = result.options;
+    options = DefaultAccuracyOptions();
+    ChooseLights(r, options);
+    ChoosePlatesAndMethods(r, reporter, result);
+    ChooseSets(r, reporter, options);
+    ChooseExposures(r, options);
     const int lutSize = CheckedLutSize(r.lutSize, "lut_size");
     if (!r.plot.empty() && !r.cost)
     {
@@ -344,27 +455,13 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     }
     if (!r.idealOnly)
     {
-        // The shipped form: the OCIO processor of the transform a config's
-        // look holds (guard + matrix, or shaper + 3D LUT + inverse shaper).
-        const RgbSpace& working = FindRgbSpace(options.workingSpace);
-        const Observer observer = options.observer;
-        options.shipped = [&working, observer, lutSize](const Light& from, const Light& to,
-                                                        const MethodSpec& method) -> PixelBatch
-        {
-            const OCIO::ConstCPUProcessorRcPtr cpu =
-                OCIO::Config::CreateRaw()
-                    ->getProcessor(
-                        IlluminantChangeTransform(from, to, method, working, observer, lutSize))
-                    ->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                               OCIO::OPTIMIZATION_DEFAULT);
-            return [cpu](float* rgb, size_t n)
-            {
-                OCIO::PackedImageDesc desc(rgb, long(n), 1, 3);
-                cpu->apply(desc);
-            };
-        };
+        options.shipped = ShippedForms(options, lutSize);
     }
+}
 
+/// Every row, with the pairs' progress passed on in tenths.
+std::vector<AccuracyRow> MeasureRows(const AccuracyOptions& options, Reporter& reporter)
+{
     const size_t pairs = PairCount(options);
     reporter.progress("accuracy: " + std::to_string(options.methods.size()) + " methods x " +
                       std::to_string(pairs) +
@@ -373,31 +470,37 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
     std::mutex mu;
     int lastTenth = -1;
     double lastFraction = 0.0;
-    result.rows = MeasureAccuracy(
-        options,
-        [&](double done)
-        {
-            std::lock_guard<std::mutex> lock(mu);
-            // Pairs finish on several threads and their reports can arrive
-            // out of order: what the reporter sees only grows.
-            lastFraction = std::max(lastFraction, done);
-            const double f = lastFraction;
-            const int tenth = int(f * 10.0);
-            std::string line;
-            if (tenth != lastTenth)
-            {
-                lastTenth = tenth;
-                line = "accuracy: " + std::to_string(int(f * 100.0 + 0.5)) + "% of pairs done";
-            }
-            reporter.progress(line, f);
-        });
+    return MeasureAccuracy(options,
+                           [&](double done)
+                           {
+                               std::lock_guard<std::mutex> lock(mu);
+                               // Pairs finish on several threads and their reports can arrive
+                               // out of order: what the reporter sees only grows.
+                               lastFraction = std::max(lastFraction, done);
+                               const double f = lastFraction;
+                               const int tenth = int(f * 10.0);
+                               std::string line;
+                               if (tenth != lastTenth)
+                               {
+                                   lastTenth = tenth;
+                                   line = "accuracy: " + std::to_string(int(f * 100.0 + 0.5)) +
+                                          "% of pairs done";
+                               }
+                               reporter.progress(line, f);
+                           });
+}
+
+/// The fitted methods cross-validated, the floor, and what each method costs.
+void MeasureFitsAndCost(const AccuracyRequest& r, Reporter& reporter, AccuracyResult& result)
+{
+    const AccuracyOptions& options = result.options;
     if (r.crossValidation || r.floor)
     {
         reporter.progress("accuracy: cross-validating the fitted methods and fitting the floor");
     }
     if (r.crossValidation)
     {
-        result.crossValidation = CrossValidate(options, 5);
+        result.crossValidation = CrossValidate(options, CROSS_VALIDATION_FOLDS);
     }
     if (r.floor)
     {
@@ -411,36 +514,45 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         result.setupCost = MeasureSetupCost(options.workingSpace);
     }
     result.costAllThreads = CostAllThreads(result.cost);
+}
 
-    // Every output of the run (heat maps, JSON, plot) is one set, committed
-    // after all of the work: a failure anywhere leaves every previous output
-    // as it was.
+/// A ΔE00 map per image and method, added to `outputs`. The maps are drawn
+/// for the default plate convention when both are measured.
+void WriteHeatmaps(const AccuracyRequest& r, Reporter& reporter, OutputSet& outputs,
+                   AccuracyResult& result)
+{
+    SpectralOptions imageOptions = ImageOptions(r);
+    imageOptions.plates = r.plates;
+    if (imageOptions.plates.plates == "both")
+    {
+        imageOptions.plates.plates = defaults::PLATES;
+    }
+    const std::vector<std::string> stems = HeatmapStems(r.images);
+    for (size_t i = 0; i < r.images.size(); ++i)
+    {
+        const std::string& image = r.images[i];
+        reporter.progress("accuracy: heat maps of " + image);
+        for (HeatmapSummary& h : WriteAccuracyHeatmaps(image, imageOptions, result.options.methods,
+                                                       r.heatmaps, stems[i], outputs, reporter))
+        {
+            h.image = image;
+            result.written.push_back(h.exr);
+            result.written.push_back(h.png);
+            result.heatmaps.push_back(std::move(h));
+        }
+    }
+}
+
+/// Every output of the run (heat maps, JSON, plot) is one set, committed
+/// after all of the work: a failure anywhere leaves every previous output
+/// as it was.
+void WriteOutputs(const AccuracyRequest& r, Reporter& reporter, AccuracyResult& result)
+{
     OutputSet outputs;
     if (!r.heatmaps.empty())
     {
-        // The maps are drawn for the default plate convention when both are
-        // measured.
-        imageOptions.plates = r.plates;
-        if (imageOptions.plates.plates == "both")
-        {
-            imageOptions.plates.plates = defaults::PLATES;
-        }
-        const std::vector<std::string> stems = HeatmapStems(r.images);
-        for (size_t i = 0; i < r.images.size(); ++i)
-        {
-            const std::string& image = r.images[i];
-            reporter.progress("accuracy: heat maps of " + image);
-            for (HeatmapSummary& h : WriteAccuracyHeatmaps(image, imageOptions, options.methods,
-                                                           r.heatmaps, stems[i], outputs, reporter))
-            {
-                h.image = image;
-                result.written.push_back(h.exr);
-                result.written.push_back(h.png);
-                result.heatmaps.push_back(std::move(h));
-            }
-        }
+        WriteHeatmaps(r, reporter, outputs, result);
     }
-
     if (!r.json.empty())
     {
         const std::string document = AccuracyDocument(result);
@@ -453,6 +565,22 @@ AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
         result.written.push_back(r.plot);
     }
     outputs.commit();
+}
+}  // namespace
+
+ReflectanceSet ReflectanceSetFromFile(const std::string& path)
+{
+    return {path, ReadSpectraFile(path)};
+}
+
+AccuracyResult MeasureAccuracyJob(const AccuracyRequest& r, Reporter& reporter)
+{
+    CheckOutputs(r);
+    AccuracyResult result;
+    ResolveOptions(r, reporter, result);
+    result.rows = MeasureRows(result.options, reporter);
+    MeasureFitsAndCost(r, reporter, result);
+    WriteOutputs(r, reporter, result);
     return result;
 }
 
@@ -460,26 +588,6 @@ std::string AccuracyDocument(const AccuracyResult& result)
 {
     const AccuracyOptions& options = result.options;
     nlohmann::ordered_json j;
-    const auto toJson = [](const std::vector<AccuracyRow>& from)
-    {
-        nlohmann::ordered_json a = nlohmann::ordered_json::array();
-        for (const AccuracyRow& r : from)
-        {
-            a.push_back({{"method", r.method},
-                         {"from", r.from},
-                         {"to", r.to},
-                         {"set", r.set},
-                         {"plates", r.plates},
-                         {"camera", PlateSourceName(r.source)},
-                         {"exposure", r.exposure},
-                         {"shipped", r.shipped},
-                         {"mean", r.mean},
-                         {"p95", r.p95},
-                         {"max", r.max},
-                         {"worst_sample", r.worstSample}});
-        }
-        return a;
-    };
     if (options.camera)
     {
         j["camera"] = {{"name", options.camera->name()},
@@ -490,9 +598,9 @@ std::string AccuracyDocument(const AccuracyResult& result)
     {
         j["camera"] = nullptr;
     }
-    j["rows"] = toJson(result.rows);
-    j["cross_validation"] = toJson(result.crossValidation);
-    j["floor"] = toJson(result.floor);
+    j["rows"] = RowsJson(result.rows);
+    j["cross_validation"] = RowsJson(result.crossValidation);
+    j["floor"] = RowsJson(result.floor);
     j["cost"] = nlohmann::ordered_json::array();
     for (const CostRow& c : result.cost)
     {

@@ -91,23 +91,16 @@ double Seconds(std::chrono::steady_clock::time_point t0)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
-
-LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, Reporter& reporter)
+/// The methods measured when none are named.
+std::vector<std::string> MethodsOf(const LightGroupAccuracyRequest& r)
 {
-    if (r.changes.empty())
-    {
-        throw ParameterError(
-            "{light_group}: give each group of the image its change, "
-            "NAME=FROM:TO");
-    }
-    const RgbSpace& working = FindRgbSpace(r.workingSpace);
-    const std::vector<std::string> methods =
-        r.methods.empty() ? std::vector<std::string>{"bradford", "cat02", "fit3x3", "rootpoly"}
-                          : r.methods;
-    CheckImageInput(r.image);
-    const ImageData input = ReadWhole(r.image);
-    const LightGroupLayout layout = FindLightGroups(r.image, input.channelNames, input.attributes);
+    return r.methods.empty() ? std::vector<std::string>{"bradford", "cat02", "fit3x3", "rootpoly"}
+                             : r.methods;
+}
+
+/// Throws unless every light group of the image is given its change.
+void RequireEveryGroup(const LightGroupAccuracyRequest& r, const LightGroupLayout& layout)
+{
     for (const LightGroupLayer& g : layout.groups)
     {
         if (std::none_of(r.changes.begin(), r.changes.end(),
@@ -119,10 +112,19 @@ LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, 
                             g.name + "=FROM:TO");
         }
     }
-    const Mat3 toXyz = RgbToXyzMatrix(working.chromaticities);
-    LightGroupAccuracyResult result;
+}
 
-    // The mixes: each light at its group's share of the luminance.
+/// The lights the global look goes between: each group's light at its
+/// group's share of the image's luminance, summed.
+struct Mixes
+{
+    Light from;
+    Light to;
+};
+
+Mixes MixLights(const LightGroupAccuracyRequest& r, const ImageData& input, const Mat3& toXyz,
+                LightGroupAccuracyResult& result)
+{
     Spectrum from = Spectrum::Constant(360.0, 1.0, 471, 0.0);
     Spectrum to = from;
     for (const SpectralLightGroup& c : r.changes)
@@ -142,9 +144,39 @@ LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, 
         result.globalFrom += (result.globalFrom.empty() ? "" : " + ") + c.group + " " + c.from.name;
         result.globalTo += (result.globalTo.empty() ? "" : " + ") + c.group + " " + c.to.name;
     }
+    return {{"mix of " + result.globalFrom, from}, {"mix of " + result.globalTo, to}};
+}
 
-    Scratch scratch;
-    // The reference: each spectral group relit exactly.
+/// The reference: each spectral group relit exactly, and judged. L*a*b* is
+/// relative to the equal-energy white at the reference's brightest
+/// luminance; pixels the reference leaves black (background) are not
+/// counted.
+struct Reference
+{
+    std::vector<Vec3> rgb;
+    Mat3 toXyz;
+    Vec3 whiteXyz;
+
+    /// ΔE00 of each lit pixel of `image` against the reference.
+    std::vector<double> deltaE(const std::vector<Vec3>& image) const
+    {
+        std::vector<double> d;
+        for (size_t p = 0; p < rgb.size(); ++p)
+        {
+            if (rgb[p].isZero(0.0))
+            {
+                continue;  // no light: background
+            }
+            d.push_back(DeltaE2000(XyzToLab(toXyz * image[p], whiteXyz),
+                                   XyzToLab(toXyz * rgb[p], whiteXyz)));
+        }
+        return d;
+    }
+};
+
+Reference RelightExactly(const LightGroupAccuracyRequest& r, const Scratch& scratch,
+                         const Mat3& toXyz, Reporter& reporter, LightGroupAccuracyResult& result)
+{
     SpectralRequest exact;
     exact.files.input = r.image;
     exact.files.output = scratch.dir + "/exact.exr";
@@ -152,12 +184,12 @@ LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, 
     exact.options.plates.plates = "lit";
     exact.options.lightGroups = r.changes;
     exact.threads = r.threads;
-    auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
     ConvertSpectralImages(exact, reporter);
     result.spectralSeconds = Seconds(t0);
-    const std::vector<Vec3> reference = Layer(ReadWhole(exact.files.output), "");
+    Reference ref{Layer(ReadWhole(exact.files.output), ""), toXyz, Vec3::Zero()};
     double white = 0.0;
-    for (const Vec3& v : reference)
+    for (const Vec3& v : ref.rgb)
     {
         white = std::max(white, (toXyz * v).y());
     }
@@ -165,64 +197,95 @@ LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, 
     {
         throw Exception(r.image + ": the relit image is black: nothing to measure");
     }
-    const Vec3 whiteXyz = Vec3::Ones() * white;
-    const auto deltaE = [&](const std::vector<Vec3>& image)
+    ref.whiteXyz = Vec3::Ones() * white;
+    return ref;
+}
+
+/// An apply's wall time (file to file) and its output's ΔE00.
+struct ApplyScore
+{
+    double seconds = 0.0;
+    double mean = 0.0;
+    double p95 = 0.0;
+};
+
+ApplyScore TimedApply(const ApplyRequest& apply, const Reference& reference)
+{
+    ApplyScore score;
+    const auto t0 = std::chrono::steady_clock::now();
+    ApplyImages(apply);
+    score.seconds = Seconds(t0);
+    std::tie(score.mean, score.p95) = Summary(reference.deltaE(Layer(ReadWhole(apply.output), "")));
+    return score;
+}
+
+/// One method: one global look on the beauty, then a look per group.
+LightGroupAccuracyRow MeasureMethod(const LightGroupAccuracyRequest& r, const std::string& method,
+                                    const Mixes& mixes, const Scratch& scratch,
+                                    const Reference& reference)
+{
+    LightGroupAccuracyRow row;
+    row.method = method;
+    ApplyRequest global;
+    global.input = r.image;
+    global.output = scratch.dir + "/global.exr";
+    global.threads = r.threads;
+    RelightRequest change;
+    change.src = mixes.from;
+    change.dst = mixes.to;
+    change.method = method;
+    change.workingSpace = r.workingSpace;
+    change.plates.plates = "lit";
+    global.relight = change;
+    const ApplyScore globalScore = TimedApply(global, reference);
+    row.globalSeconds = globalScore.seconds;
+    row.globalMean = globalScore.mean;
+    row.globalP95 = globalScore.p95;
+
+    ApplyRequest groups = global;
+    groups.output = scratch.dir + "/groups.exr";
+    groups.relight.reset();
+    for (const SpectralLightGroup& c : r.changes)
     {
-        std::vector<double> d;
-        for (size_t p = 0; p < reference.size(); ++p)
-        {
-            if (reference[p].isZero(0.0))
-            {
-                continue;  // no light: background
-            }
-            d.push_back(DeltaE2000(XyzToLab(toXyz * image[p], whiteXyz),
-                                   XyzToLab(toXyz * reference[p], whiteXyz)));
-        }
-        return d;
-    };
-    const std::vector<double> none = deltaE(Layer(input, ""));
+        RelightRequest g = change;
+        g.src = c.from;
+        g.dst = c.to;
+        groups.lightGroups.push_back({c.group, g});
+    }
+    const ApplyScore groupsScore = TimedApply(groups, reference);
+    row.groupsSeconds = groupsScore.seconds;
+    row.groupsMean = groupsScore.mean;
+    row.groupsP95 = groupsScore.p95;
+    return row;
+}
+
+}  // namespace
+
+LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, Reporter& reporter)
+{
+    if (r.changes.empty())
+    {
+        throw ParameterError(
+            "{light_group}: give each group of the image its change, "
+            "NAME=FROM:TO");
+    }
+    const RgbSpace& working = FindRgbSpace(r.workingSpace);
+    const std::vector<std::string> methods = MethodsOf(r);
+    CheckImageInput(r.image);
+    const ImageData input = ReadWhole(r.image);
+    RequireEveryGroup(r, FindLightGroups(r.image, input.channelNames, input.attributes));
+    const Mat3 toXyz = RgbToXyzMatrix(working.chromaticities);
+    LightGroupAccuracyResult result;
+    const Mixes mixes = MixLights(r, input, toXyz, result);
+
+    Scratch scratch;
+    const Reference reference = RelightExactly(r, scratch, toXyz, reporter, result);
+    const std::vector<double> none = reference.deltaE(Layer(input, ""));
     result.pixels = none.size();
     result.noChangeMean = Summary(none).first;
-
-    const Light mixFrom{"mix of " + result.globalFrom, from};
-    const Light mixTo{"mix of " + result.globalTo, to};
     for (const std::string& method : methods)
     {
-        LightGroupAccuracyRow row;
-        row.method = method;
-        ApplyRequest global;
-        global.input = r.image;
-        global.output = scratch.dir + "/global.exr";
-        global.threads = r.threads;
-        RelightRequest change;
-        change.src = mixFrom;
-        change.dst = mixTo;
-        change.method = method;
-        change.workingSpace = r.workingSpace;
-        change.plates.plates = "lit";
-        global.relight = change;
-        t0 = std::chrono::steady_clock::now();
-        ApplyImages(global);
-        row.globalSeconds = Seconds(t0);
-        std::tie(row.globalMean, row.globalP95) =
-            Summary(deltaE(Layer(ReadWhole(global.output), "")));
-
-        ApplyRequest groups = global;
-        groups.output = scratch.dir + "/groups.exr";
-        groups.relight.reset();
-        for (const SpectralLightGroup& c : r.changes)
-        {
-            RelightRequest g = change;
-            g.src = c.from;
-            g.dst = c.to;
-            groups.lightGroups.push_back({c.group, g});
-        }
-        t0 = std::chrono::steady_clock::now();
-        ApplyImages(groups);
-        row.groupsSeconds = Seconds(t0);
-        std::tie(row.groupsMean, row.groupsP95) =
-            Summary(deltaE(Layer(ReadWhole(groups.output), "")));
-        result.rows.push_back(row);
+        result.rows.push_back(MeasureMethod(r, method, mixes, scratch, reference));
         reporter.progress("light groups: " + method,
                           double(result.rows.size()) / double(methods.size()));
     }

@@ -12,7 +12,9 @@
 namespace bandlight
 {
 
-/// Where an accuracy row's plate came from.
+/// Where an accuracy row's plate came from: how the plates are simulated.
+/// One table in Accuracy.cpp gives each its key and how its plates are made;
+/// MeasureAccuracy measures them in this order.
 enum class PlateSource
 {
     CIE,     ///< the colour as the observer sees it
@@ -22,8 +24,22 @@ enum class PlateSource
     CAMERA_DAYLIGHT_IDT,
 };
 
-/// Its name in reports and JSON: "cie", "camera", "camera-daylight-idt".
+/// Its key in reports and JSON: "cie", "camera", "camera-daylight-idt".
 const char* PlateSourceName(PlateSource source) noexcept;
+
+/// The plates key of the rows that measure the lit looks on `balanced`
+/// plates (AccuracyOptions::measureMismatch): "<key>-through-lit-looks".
+std::string ThroughLitLooksKey(const Plates& balanced);
+
+/// The folds CrossValidate cuts each training set into.
+inline constexpr int CROSS_VALIDATION_FOLDS = 5;
+/// CrossValidate's set names: "training, in-sample" and "training, N-fold".
+std::string InSampleSetName();
+std::string CrossValidatedSetName(int folds);
+
+/// MeasureFloor's methods, in the order it measures them: "floor-3x3" and
+/// "floor-rootpoly".
+const std::vector<std::string>& FloorMethodNames();
 
 /// ΔE00 of one method for one illuminant pair over one reflectance set at
 /// one exposure, against the spectral reference (the remittances rendered
@@ -113,7 +129,8 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& options,
 /// own training set and measured on it (set "training, in-sample"), and
 /// `folds`-fold cross-validated — fitted on all folds but one, measured on
 /// that one (set "training, N-fold"). Ideal forms, k = 1.
-std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& options, int folds = 5);
+std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& options,
+                                       int folds = CROSS_VALIDATION_FOLDS);
 
 /// The floor of pixel-only methods on each set: per pair, the best 3×3
 /// ("floor-3x3") and the best degree-2 root polynomial ("floor-rootpoly")

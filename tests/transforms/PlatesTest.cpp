@@ -275,6 +275,48 @@ TEST_CASE("With the CIE observer as the camera, accuracy --camera equals plain a
     CHECK(cameraAware == 6 * 2 * 2);
 }
 
+TEST_CASE("Each simulation kind keeps its key, its order and the forms measured on its plates",
+          "[transforms][camera][accuracy]")
+{
+    // The keys are the JSON document's "camera" values and the report's.
+    CHECK(std::string(PlateSourceName(PlateSource::CIE)) == "cie");
+    CHECK(std::string(PlateSourceName(PlateSource::CAMERA)) == "camera");
+    CHECK(std::string(PlateSourceName(PlateSource::CAMERA_DAYLIGHT_IDT)) == "camera-daylight-idt");
+
+    AccuracyOptions o;
+    o.lights = {{"A", BuiltinIlluminant("A")}, {"D65", BuiltinIlluminant("D65")}};
+    o.methods = {"bradford", "rootpoly-camera"};
+    o.sets = {HeldOutTcs()};
+    o.exposures = {1.0};
+    o.camera = std::make_shared<const SpectralCamera>(ObserverCamera());
+    // A shipped form that changes nothing: only where shipped rows appear matters here.
+    o.shipped = [](const Light&, const Light&, const MethodSpec&) -> PixelBatch
+    { return [](float*, size_t) {}; };
+    const std::vector<AccuracyRow> rows = MeasureAccuracy(o);
+    // Per pair: lit plates, bradford on cie (ideal, shipped), camera and daylight IDT;
+    // balanced plates, the same and the lit looks on cie; rootpoly-camera once on each.
+    CHECK(rows.size() == 2 * ((4 + 1) + (5 + 1)));
+    for (size_t i = 0; i < rows.size(); ++i)
+    {
+        const AccuracyRow& r = rows[i];
+        INFO(r.method << " " << r.from << "->" << r.to << " " << r.plates << " "
+                      << PlateSourceName(r.source) << (r.shipped ? " shipped" : ""));
+        if (r.shipped || r.plates == ThroughLitLooksKey(o.plates.back()))
+        {
+            CHECK(r.source == PlateSource::CIE);
+        }
+        if (r.method == "rootpoly-camera")
+        {
+            CHECK(r.source == PlateSource::CAMERA_DAYLIGHT_IDT);
+        }
+        // A method's rows for one pair and convention come kind by kind, in the enum's order.
+        if (i > 0 && rows[i - 1].method == r.method && rows[i - 1].from == r.from)
+        {
+            CHECK(int(rows[i - 1].source) <= int(r.source));
+        }
+    }
+}
+
 TEST_CASE("Knowing the camera wins back error on daylight-IDT plates", "[transforms][camera]")
 {
     AccuracyOptions o;
