@@ -35,7 +35,7 @@ double NativeCost(const std::vector<CostRow>& cost, const std::string& method)
     int threads = 0;
     for (const CostRow& c : cost)
     {
-        if (c.method == method && c.form == "native" && c.threads > threads)
+        if (c.method == method && c.form == CostForm::NATIVE && c.threads > threads)
         {
             ns = c.nsPerPixel;
             threads = c.threads;
@@ -230,10 +230,10 @@ std::map<std::string, double> CostAllThreads(const std::vector<CostRow>& cost)
     const int allThreads = int(std::max(1u, std::thread::hardware_concurrency()));
     for (const CostRow& c : cost)
     {
-        if (c.threads == allThreads && c.form != "direct-fit" && c.form != "native")
+        if (c.threads == allThreads && c.form != CostForm::DIRECT_FIT && c.form != CostForm::NATIVE)
         {
             costAll[c.method] = c.nsPerPixel;
-            if (c.form == "ocio-matrix")
+            if (c.form == CostForm::OCIO_MATRIX)
             {
                 matrixCosts.push_back(c.nsPerPixel);
             }
@@ -605,7 +605,7 @@ std::string AccuracyDocument(const AccuracyResult& result)
     for (const CostRow& c : result.cost)
     {
         j["cost"].push_back({{"method", c.method},
-                             {"form", c.form},
+                             {"form", c.formName()},
                              {"ns_per_pixel", c.nsPerPixel},
                              {"mpixel_per_s", 1e3 / c.nsPerPixel},
                              {"threads", c.threads}});

@@ -263,7 +263,7 @@ void WriteCost(std::ostream& out, const AccuracyResult& result)
     {
         char line[160];
         std::snprintf(line, sizeof line, "  %-10s %-12s %d thread%s %10.2f ns  %8.1f Mpixel/s\n",
-                      c.method.c_str(), c.form.c_str(), c.threads, c.threads > 1 ? "s" : " ",
+                      c.method.c_str(), c.formName().c_str(), c.threads, c.threads > 1 ? "s" : " ",
                       c.nsPerPixel, 1e3 / c.nsPerPixel);
         out << line;
     }

@@ -103,7 +103,7 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                             th.join();
                         }
                     });
-                rows.push_back({name, "spectral-81", threads, s * 1e9 / double(n)});
+                rows.push_back({name, CostForm::SPECTRAL, threads, s * 1e9 / double(n)});
             }
             continue;
         }
@@ -118,13 +118,10 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
             std::vector<float> px = source;
             const double s = BestSeconds(
                 [&] { ApplyToBuffer(cpu, px.data(), 1920, pixels / 1920, 4, rgb, threads); });
-            rows.push_back({name,
-                            method.isLinear()
-                                ? "ocio-matrix"
-                                : "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE),
+            rows.push_back({name, method.isLinear() ? CostForm::OCIO_MATRIX : CostForm::OCIO_LUT,
                             threads, s * 1e9 / double(pixels)});
         }
-        if (const char* directForm = method.entry().directForm)
+        if (const DirectForm form = method.entry().directForm; form != DirectForm::NONE)
         {
             const long n = std::min<long>(pixels, 20000);
             for (int threads : {1, AllThreads()})
@@ -144,11 +141,32 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
                         direct.apply(px.data(), size_t(n), threads);
                     },
                     1);
-                rows.push_back({name, directForm, threads, s * 1e9 / double(n)});
+                rows.push_back({name,
+                                form == DirectForm::NATIVE ? CostForm::NATIVE
+                                                           : CostForm::DIRECT_FIT,
+                                threads, s * 1e9 / double(n)});
             }
         }
     }
     return rows;
+}
+
+std::string CostRow::formName() const
+{
+    switch (form)
+    {
+    case CostForm::OCIO_MATRIX:
+        return "ocio-matrix";
+    case CostForm::OCIO_LUT:
+        return "ocio-lut" + std::to_string(defaults::CONFIG_LUT_SIZE);
+    case CostForm::DIRECT_FIT:
+        return "direct-fit";
+    case CostForm::NATIVE:
+        return "native";
+    case CostForm::SPECTRAL:
+        return "spectral-" + std::to_string(SurfaceRenderer::kSamples);
+    }
+    return "?";
 }
 
 std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)

@@ -10,13 +10,27 @@
 namespace bandlight::jobs
 {
 
+/// How a method was applied when it was timed.
+enum class CostForm
+{
+    OCIO_MATRIX,  ///< a linear method's OCIO processor
+    OCIO_LUT,     ///< a non-linear method's OCIO processor, its LUT the size configs bake
+    DIRECT_FIT,   ///< DirectForm::DIRECT_FIT
+    NATIVE,       ///< DirectForm::NATIVE
+    SPECTRAL,     ///< the 3 × 81 integration a spectral image needs per pixel
+};
+
 /// What applying a method to pixels costs on this machine.
 struct CostRow
 {
     std::string method;
-    std::string form;  ///< "ocio-matrix", "ocio-lut65", "direct-fit", "native", "spectral-81"
+    CostForm form = CostForm::OCIO_MATRIX;
     int threads = 1;
     double nsPerPixel = 0.0;
+
+    /// The form's name in reports and JSON: "ocio-matrix", "ocio-lut65",
+    /// "direct-fit", "native", "spectral-81".
+    std::string formName() const;
 };
 
 /// One-off costs: fitting, LUT baking.

@@ -257,7 +257,7 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
                              "2019 sigmoid polynomial), re-lit spectrally: not linear, baked into "
                              "a 3D LUT with a log2 shaper."));
     upsample.pixelForm = &detail::UpsampleForm;
-    upsample.directForm = "direct-fit";
+    upsample.directForm = DirectForm::DIRECT_FIT;
     upsample.accuracyDefaults = {"upsample"};
     all.push_back(upsample);
 
@@ -269,7 +269,7 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
     rootpoly.pixelForm = &detail::RootPolyForm;
     rootpoly.defaultTraining = &RootPolynomialTraining;
     rootpoly.takesTraining = true;
-    rootpoly.directForm = "native";
+    rootpoly.directForm = DirectForm::NATIVE;
     rootpoly.accuracyDefaults = {"rootpoly", "rootpoly3"};
     all.push_back(rootpoly);
 
@@ -281,7 +281,7 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
     rootpolyCamera.pixelForm = &detail::RootPolyCameraForm;
     rootpolyCamera.defaultTraining = &RootPolynomialTraining;
     rootpolyCamera.needsCamera = true;
-    rootpolyCamera.directForm = "native";
+    rootpolyCamera.directForm = DirectForm::NATIVE;
     rootpolyCamera.cameraDefaults = {"rootpoly-camera"};
     all.push_back(rootpolyCamera);
 

@@ -49,6 +49,15 @@ enum class ChangeMethod
 
 struct MethodEntry;
 
+/// How a method is applied outside OCIO, when it has such a form: the cost
+/// table times it beside the OCIO processor.
+enum class DirectForm
+{
+    NONE,
+    DIRECT_FIT,  ///< a fit per pixel (upsample), without the LUT a config bakes
+    NATIVE,      ///< bandlight's own kernel of the exact map (rootpoly)
+};
+
 /// A method with its parameters, parsed from its name (ParseMethod):
 /// "none", "vonkries", "bradford", "cat02", "band3" (the band model's
 /// VB/VG/VR), "band3-wp", "bandN" / "bandN-wp" (N equal bands over
@@ -164,9 +173,8 @@ struct MethodEntry
     /// Works in a band set (MethodSpec::bands): band tables and band spaces
     /// are written for it.
     bool usesBands = false;
-    /// The form the cost table times besides the OCIO processor
-    /// ("native", "direct-fit"; nullptr: none).
-    const char* directForm = nullptr;
+    /// The form the cost table times besides the OCIO processor.
+    DirectForm directForm = DirectForm::NONE;
     /// The names this entry gives a config's default looks and the
     /// accuracy report's default methods.
     std::vector<const char*> configDefaults;

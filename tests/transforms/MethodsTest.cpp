@@ -37,7 +37,7 @@ TEST_CASE("Every registry entry has the builder its kernel needs", "[transforms]
             case MethodKernel::ROOTPOLY:
                 CHECK(e.pixelForm != nullptr);
                 CHECK(e.litMatrix == nullptr);
-                CHECK(e.directForm != nullptr);  // the cost table times its own form
+                CHECK(e.directForm != DirectForm::NONE);  // the cost table times its own form
                 break;
             case MethodKernel::SPECTRAL:
                 CHECK(e.isReference());
