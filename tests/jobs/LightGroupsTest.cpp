@@ -789,6 +789,88 @@ TEST_CASE("A matte mixes two changes of light: m inside, 1 - m outside",
     CHECK_FALSE(fs::exists(bad.output));
 }
 
+TEST_CASE("A matte with two looks of a config is the mix of the config's own processors",
+          "[jobs][lightgroups][matte]")
+{
+    const std::string dir = Fresh("matte_looks");
+    const std::string plate = dir + "/plate.exr";
+    // Values past 1 reach the rootpoly look's shaper range, as a bright
+    // window does.
+    const auto colour = [](size_t p, size_t c)
+    { return 0.05f + 0.09f * float(p) + 0.2f * float(c); };
+    WriteExr(
+        plate, 6, 4,
+        {{{"R", "G", "B", "A"}, [&](size_t p, size_t c) { return c == 3 ? 1.0f : colour(p, c); }}});
+    const auto m = [](size_t p) { return float(p % 6) / 5.0f; };
+    WriteExr(dir + "/matte.exr", 6, 4, {{{"A"}, [&](size_t p, size_t) { return m(p); }}});
+    const std::string cfg = dir + "/cfg";
+    REQUIRE(test::Bandlight("config --out '" + cfg +
+                            "' --illuminants A,D65,F11 --methods rootpoly,bradford")
+                .code == 0);
+    const std::string apply = "apply '" + plate + "' '" + dir + "/%s.exr' --config '" + cfg +
+                              "' --matte '" + dir + "/matte.exr' ";
+    const auto run = [&](const std::string& out, const std::string& sides)
+    {
+        std::string args = apply;
+        args.replace(args.find("%s"), 2, out);
+        const test::Result r = test::Bandlight(args + sides);
+        INFO(r.err);
+        REQUIRE(r.code == 0);
+        return ReadExr(dir + "/" + out + ".exr")[0];
+    };
+    const Exr::Part looks =
+        run("looks", "--look-inside rootpoly_A_to_D65 --look-outside bradford_F11_to_D65");
+
+    // The looks as OpenColorIO applies them from the written config, in its
+    // scene_linear (the plate says nothing, so it is taken as ACEScg, the
+    // config's scene_linear: no conversion).
+    const OCIO::ConstConfigRcPtr config =
+        OCIO::Config::CreateFromFile((cfg + "/config.ocio").c_str());
+    const auto byOcio = [&](const std::string& look, size_t p)
+    {
+        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+        t->setSrc(OCIO::ROLE_SCENE_LINEAR);
+        t->setDst(OCIO::ROLE_SCENE_LINEAR);
+        t->setLooks(look.c_str());
+        float rgb[3] = {colour(p, 0), colour(p, 1), colour(p, 2)};
+        config->getProcessor(t)->getDefaultCPUProcessor()->applyRGB(rgb);
+        return std::vector<float>(rgb, rgb + 3);
+    };
+    const char* channels[3] = {"R", "G", "B"};
+    for (size_t p = 0; p < 24; ++p)
+    {
+        const std::vector<float> in = byOcio("rootpoly_A_to_D65", p);
+        const std::vector<float> out = byOcio("bradford_F11_to_D65", p);
+        for (int c = 0; c < 3; ++c)
+        {
+            const double expected =
+                double(m(p)) * in[size_t(c)] + (1.0 - double(m(p))) * out[size_t(c)];
+            INFO("pixel " << p << " channel " << channels[c]);
+            CHECK(looks.at(p, channels[c]) == Approx(expected).margin(1e-6));
+        }
+        CHECK(looks.at(p, "A") == 1.0f);
+    }
+
+    // A look beside a change of light: the change as plain apply makes it.
+    const Exr::Part mixed =
+        run("mixed", "--look-inside rootpoly_A_to_D65 --look-outside F11:D65 --method bradford");
+    const test::Result plain = test::Bandlight("apply '" + plate + "' '" + dir +
+                                               "/plain.exr' --from F11 --to D65 --method bradford");
+    REQUIRE(plain.code == 0);
+    const Exr::Part outside = ReadExr(dir + "/plain.exr")[0];
+    for (size_t p = 0; p < 24; ++p)
+    {
+        const std::vector<float> in = byOcio("rootpoly_A_to_D65", p);
+        for (int c = 0; c < 3; ++c)
+        {
+            const double expected =
+                double(m(p)) * in[size_t(c)] + (1.0 - double(m(p))) * outside.at(p, channels[c]);
+            INFO("pixel " << p << " channel " << channels[c]);
+            CHECK(mixed.at(p, channels[c]) == Approx(expected).margin(1e-6));
+        }
+    }
+}
+
 TEST_CASE("apply --light-group on frame sets: --skip-existing and --keep-going as plain apply",
           "[jobs][lightgroups][frames]")
 {
