@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -338,6 +339,72 @@ TEST_CASE("RelightLightGroups keeps the residual and refuses groups that are no 
     nan[16] = std::nanf("");
     CHECK_THROWS_WITH(RelightLightGroups(l, {{"a", twice}}, nan.data(), 2, 1, 9, "x.exr"),
                       Contains("x.exr: light group 'b' is NaN at pixel (1, 0)"));
+}
+
+TEST_CASE(
+    "RelightLightGroups relights a frame of many row blocks as pixel by pixel, and names "
+    "the first pixel at fault",
+    "[jobs][lightgroups]")
+{
+    const LightGroupLayout l = FindLightGroups(
+        "x.exr",
+        {"R", "G", "B", "RGBA_a.R", "RGBA_a.G", "RGBA_a.B", "RGBA_b.R", "RGBA_b.G", "RGBA_b.B"},
+        {});
+    // 7 x 101 pixels: rows in blocks, the last one partial, split over
+    // threads within each block.
+    const long w = 7, h = 101;
+    const size_t count = size_t(w * h);
+    std::vector<float> px(9 * count);
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            const float a = 0.01f * float(p % 97) + 0.1f * float(c);
+            const float b = 0.02f * float(p % 13);
+            px[9 * p + 3 + size_t(c)] = a;
+            px[9 * p + 6 + size_t(c)] = b;
+            px[9 * p + size_t(c)] = a + b + 0.125f;  // a residual of 0.125
+        }
+    }
+    const std::vector<float> in = px;
+    // A work that depends on where the pixel is in its buffer would show a
+    // block's offset: this one depends on the value alone.
+    const auto square = [](float* p, long bw, long bh, int n, const int* rgb)
+    {
+        for (long i = 0; i < bw * bh; ++i)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                p[i * n + rgb[c]] *= p[i * n + rgb[c]];
+            }
+        }
+    };
+    RelightLightGroups(l, {{"a", square}}, px.data(), w, h, 9, "x.exr");
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (size_t c = 0; c < 3; ++c)
+        {
+            const double a = in[9 * p + 3 + c], b = in[9 * p + 6 + c];
+            const double residual = double(in[9 * p + c]) - (a + b);
+            CHECK(px[9 * p + 3 + c] == float(a * a));
+            CHECK(px[9 * p + 6 + c] == float(b));
+            CHECK(px[9 * p + c] == float(double(float(a * a)) + b + residual));
+        }
+    }
+    // Faults in two places, far apart (other threads, other blocks): the
+    // first in reading order is named, and nothing has changed.
+    std::vector<float> bad = in;
+    bad[9 * (40 * size_t(w) + 3) + 4] = 5.0f;           // (3, 40): a's G past the beauty
+    bad[9 * (90 * size_t(w) + 1) + 8] = std::nanf("");  // (1, 90): b's B NaN
+    const std::vector<float> before = bad;
+    CHECK_THROWS_WITH(
+        RelightLightGroups(l, {{"a", square}}, bad.data(), w, h, 9, "x.exr"),
+        Contains("x.exr: the light groups sum to more than the beauty at pixel (3, 40)"));
+    // Bit for bit (the NaN compares unequal to itself).
+    CHECK(std::memcmp(bad.data(), before.data(), bad.size() * sizeof(float)) == 0);
+    bad[9 * (40 * size_t(w) + 3) + 4] = in[9 * (40 * size_t(w) + 3) + 4];
+    CHECK_THROWS_WITH(RelightLightGroups(l, {{"a", square}}, bad.data(), w, h, 9, "x.exr"),
+                      Contains("x.exr: light group 'b' is NaN at pixel (1, 90) (layer RGBA_b)"));
 }
 
 TEST_CASE(
