@@ -356,10 +356,10 @@ void AddApplyCommand(CLI::App& app)
     cmd->add_option("--config", r.config,
                     "Config directory (or .ocio file) holding the look (or a matte's looks)");
     cmd->add_option("--colorspace", r.colorspace,
-                    "With --look: the image's colour space in the config (default: scene_linear, "
-                    "the image converted to it from what the file says). Without: what the file "
-                    "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
-                    "or srgb");
+                    "With --look (or a matte's looks): the image's colour space in the config "
+                    "(default: scene_linear, the image converted to it from what the file says). "
+                    "Without: what the file holds instead of what its tags say, a built-in space "
+                    "(acescg, rec709, ...) or srgb");
     AddRelightOptions(*cmd, o->relight, false);
     cmd->add_option("--light-group", o->lightGroups,
                     "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO, "
