@@ -4,10 +4,14 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "bandlight/jobs/ApplyJob.h"
 #include "bandlight/jobs/Defaults.h"
+#include "bandlight/jobs/Inputs.h"
 #include "bandlight/spectral/Parallel.h"
 #include "bandlight/spectral/TextFile.h"
 #include "cli/Commands.h"
@@ -29,26 +33,91 @@ struct ApplyOptions
     /// "FILE:LINE" for a --light-group-file line.
     std::vector<std::string> lightGroupSources;
     std::string lightGroupFile;  ///< one NAME=FROM:TO[@METHOD] per line
-    std::string lookInside;                ///< FROM:TO
+    std::string lookInside;      ///< FROM:TO, or a look of --config
     std::string lookOutside;
 };
 
 /// --look-inside / --look-outside FROM:TO as a change of light with the
 /// command's --method, --working-space and plates.
-jobs::RelightRequest SideChange(const ApplyOptions& o, const CLI::App& cmd,
-                                const std::string& option, const std::string& value,
-                                jobs::Reporter& reporter)
+jobs::RelightRequest SideChange(const ApplyOptions& o, const std::string& option,
+                                const std::string& value, jobs::Reporter& reporter)
 {
     const size_t colon = value.rfind(':');
     if (colon == std::string::npos || colon == 0 || colon + 1 == value.size())
     {
-        throw ParameterError("{" + option + "} takes FROM:TO, got '" + OneLine(value, 80) + "'");
+        throw ParameterError("{" + option + "} takes FROM:TO, or a look of {config=}DIR, got '" +
+                             OneLine(value, 80) + "'");
     }
     RelightOptions side = o.relight;
     side.from = value.substr(0, colon);
     side.to = value.substr(colon + 1);
-    (void)cmd;
     return side.relight(reporter);
+}
+
+/// The looks of a config named in a message: every one of a small config;
+/// of a large one, how many and the nearest to `value` (bandlight's own
+/// configs hold 120 and more).
+std::string LooksNear(const std::vector<std::string>& looks, const std::string& value)
+{
+    constexpr size_t kListed = 12;
+    std::vector<std::string> shown = looks;
+    if (looks.size() > kListed)
+    {
+        std::stable_sort(shown.begin(), shown.end(),
+                         [&](const std::string& a, const std::string& b)
+                         { return EditDistance(value, a) < EditDistance(value, b); });
+        shown.resize(kListed);
+    }
+    std::string list;
+    for (const std::string& name : shown)
+    {
+        list += (list.empty() ? "" : ", ") + name;
+    }
+    if (looks.empty())
+    {
+        return "it has no looks";
+    }
+    return looks.size() > kListed
+               ? "it has " + std::to_string(looks.size()) + " looks, the nearest " + list
+               : "its looks: " + list;
+}
+
+/// A side of the matte into the request: a look when --config has a look
+/// of that name, FROM:TO otherwise. A value that is neither is named with
+/// the config's looks.
+void ResolveSide(ApplyOptions& o, const std::string& option, const std::string& value,
+                 const std::vector<std::string>& looks, std::string& look,
+                 std::optional<jobs::RelightRequest>& relight, jobs::Reporter& reporter)
+{
+    if (std::find(looks.begin(), looks.end(), value) != looks.end())
+    {
+        look = value;
+        return;
+    }
+    if (o.request.config.empty())
+    {
+        relight = SideChange(o, option, value, reporter);
+        return;
+    }
+    // Why it is no FROM:TO either, when it reads like one.
+    std::string why;
+    try
+    {
+        relight = SideChange(o, option, value, reporter);
+        return;
+    }
+    catch (const ParameterError& e)
+    {
+        why = e.spelled(Face::COMMAND);
+    }
+    catch (const Exception& e)
+    {
+        why = e.what();
+    }
+    throw ParameterError(
+        "{" + option + "} '" + OneLine(value, 80) + "' is no look of " + o.request.config +
+        (value.find(':') == std::string::npos ? "" : ", nor FROM:TO (" + why + ")") + "; " +
+        LooksNear(looks, value));
 }
 
 /// --light-group NAME=FROM:TO[@METHOD] (a change of light, with its own
@@ -183,7 +252,11 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
     }
     if (!o.request.matte.empty() || !o.lookInside.empty() || !o.lookOutside.empty())
     {
-        if (!o.request.look.empty() || !o.lightGroups.empty() || o.relight.given())
+        const bool lights =
+            std::any_of(given.begin(), given.end(),
+                        [](const std::string& n) { return n == "--from" || n == "--to"; });
+        if (!o.request.look.empty() || !o.lightGroups.empty() || !o.lightGroupFile.empty() ||
+            lights)
         {
             throw ParameterError(
                 "{matte} relights each side with its own change of light: "
@@ -193,10 +266,33 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
         {
             throw ParameterError(
                 "give {matte=}MATTE.exr[:CHANNEL] with {look_inside=}FROM:TO "
-                "and {look_outside=}FROM:TO");
+                "and {look_outside=}FROM:TO (or looks of {config=}DIR)");
         }
-        o.request.insideRelight = SideChange(o, cmd, "look_inside", o.lookInside, reporter);
-        o.request.outsideRelight = SideChange(o, cmd, "look_outside", o.lookOutside, reporter);
+        std::vector<std::string> looks;
+        if (!o.request.config.empty())
+        {
+            const OCIO_NAMESPACE::ConstConfigRcPtr config = jobs::LoadConfig(o.request.config);
+            for (int i = 0; i < config->getNumLooks(); ++i)
+            {
+                looks.emplace_back(config->getLookNameByIndex(i));
+            }
+        }
+        ResolveSide(o, "look_inside", o.lookInside, looks, o.request.insideLook,
+                    o.request.insideRelight, reporter);
+        ResolveSide(o, "look_outside", o.lookOutside, looks, o.request.outsideLook,
+                    o.request.outsideRelight, reporter);
+        if (!o.request.insideLook.empty() && !o.request.outsideLook.empty() && !given.empty())
+        {
+            std::string names;
+            for (const std::string& n : given)
+            {
+                names += (names.empty() ? "" : ", ") + n;
+            }
+            throw ParameterError(
+                "{look_inside} and {look_outside} are looks of {config}, "
+                "applied as they are: " +
+                names + " do not apply to them");
+        }
     }
     else if (!o.lightGroups.empty())
     {
@@ -257,12 +353,13 @@ void AddApplyCommand(CLI::App& app)
     cmd->add_option("IN", r.input, "Input image, or a pattern such as plate.####.exr")->required();
     cmd->add_option("OUT", r.output, "Output image, or a pattern")->required();
     cmd->add_option("--look", r.look, "Look to apply, from --config");
-    cmd->add_option("--config", r.config, "Config directory (or .ocio file) holding the look");
+    cmd->add_option("--config", r.config,
+                    "Config directory (or .ocio file) holding the look (or a matte's looks)");
     cmd->add_option("--colorspace", r.colorspace,
-                    "With --look: the image's colour space in the config (default: scene_linear, "
-                    "the image converted to it from what the file says). Without: what the file "
-                    "holds instead of what its tags say, a built-in space (acescg, rec709, ...) "
-                    "or srgb");
+                    "With --look (or a matte's looks): the image's colour space in the config "
+                    "(default: scene_linear, the image converted to it from what the file says). "
+                    "Without: what the file holds instead of what its tags say, a built-in space "
+                    "(acescg, rec709, ...) or srgb");
     AddRelightOptions(*cmd, o->relight, false);
     cmd->add_option("--light-group", o->lightGroups,
                     "Relight one light group of a multi-layer EXR on its own: NAME=FROM:TO, "
@@ -282,10 +379,12 @@ void AddApplyCommand(CLI::App& app)
                     "channel) for a plate lit by two lights: --look-inside relights where the "
                     "matte is 1, --look-outside where it is 0, mixed by it between");
     cmd->add_option("--look-inside", o->lookInside,
-                    "With --matte: the change of light inside the matte, FROM:TO (--method "
-                    "and the plates apply)");
+                    "With --matte: the change of light inside the matte, a look of --config "
+                    "(applied as --look is, in --colorspace of the config or its scene_linear) "
+                    "or FROM:TO (--method and the plates apply)");
     cmd->add_option("--look-outside", o->lookOutside,
-                    "With --matte: the change of light outside the matte, FROM:TO");
+                    "With --matte: the change of light outside the matte, a look of --config "
+                    "or FROM:TO");
     AddFrameSetOptions(*cmd, r.frames, r.skipExisting, r.keepGoing, r.threads);
     cmd->callback([o, cmd] { RunApply(*o, *cmd); });
 }

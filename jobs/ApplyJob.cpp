@@ -7,7 +7,10 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "bandlight/jobs/Frames.h"
 #include "bandlight/jobs/ImageApply.h"
@@ -104,6 +107,69 @@ RelightForm MakeRelightForm(const RelightRequest& relight, Reporter& reporter)
         f.kernel = NativeClampMatrix(f.processor);
     }
     return f;
+}
+
+/// The colour space of `config` a look is applied in: {colorspace}, or
+/// scene_linear. Throws Exception when the config has no such space.
+std::string LookSpace(const ApplyRequest& r, const OCIO::ConstConfigRcPtr& config)
+{
+    const std::string space =
+        r.colorspace.empty() ? std::string(OCIO::ROLE_SCENE_LINEAR) : r.colorspace;
+    if (!config->getColorSpace(space.c_str()))
+    {
+        throw Exception("colour space '" + space + "' is not in " + r.config);
+    }
+    return space;
+}
+
+/// A look of the request's config as the pixels get it, as `apply --look`
+/// applies it: from LookSpace to itself through the config's own
+/// processor; natively when that optimises to a clamp and a matrix (any
+/// config's, read back from OCIO). Throws Exception when the config has no
+/// such look (checked first) or colour space.
+RelightForm MakeLookForm(const ApplyRequest& r, const OCIO::ConstConfigRcPtr& config,
+                         const std::string& look)
+{
+    if (!config->getLook(look.c_str()))
+    {
+        throw Exception("look '" + look + "' is not in " + r.config);
+    }
+    const std::string space = LookSpace(r, config);
+    OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+    t->setSrc(space.c_str());
+    t->setDst(space.c_str());
+    t->setLooks(look.c_str());
+    RelightForm f;
+    f.processor = config->getProcessor(t);
+    f.kernel = NativeClampMatrix(f.processor);
+    f.applied = "look " + look;
+    return f;
+}
+
+/// The linear space an image is converted to for a config's looks: the
+/// config's scene_linear, whose primaries the config shows; nullptr (the
+/// pixels go to the looks as they are) when the user named the image's
+/// colour space in the config, or when scene_linear's primaries are
+/// unknown (`unknown` then says why).
+const RgbSpace* LookWorkingSpace(const ApplyRequest& r, const OCIO::ConstConfigRcPtr& config,
+                                 std::string& unknown)
+{
+    if (!r.colorspace.empty())
+    {
+        return nullptr;
+    }
+    try
+    {
+        return IdentifySceneLinear(config).space;
+    }
+    catch (const Exception& e)
+    {
+        unknown = "the primaries of " + r.config +
+                  "'s scene_linear are unknown, so the image goes to the look as it is; name its "
+                  "colour space in the config with {colorspace} (" +
+                  std::string(e.what()) + ")";
+        return nullptr;
+    }
 }
 
 /// Each note once for a sequence, the frame's names given as the patterns.
@@ -314,14 +380,54 @@ void CheckMatteFits(const Matte& m, const std::string& in, const ImageData& head
     }
 }
 
+/// One side of a matte as the pixels get it: a change of light or a look
+/// of the config, in the space the image is converted to for the matte.
+struct MatteSide
+{
+    RelightForm form;
+    /// A change of light beside a look: the processors that take the looks'
+    /// pixels to the change's working space, in order, and those back.
+    std::vector<OCIO::ConstCPUProcessorRcPtr> into, back;
+
+    BufferWork work(int threads) const
+    {
+        BufferWork w = form.work(threads);
+        if (into.empty() && back.empty())
+        {
+            return w;
+        }
+        return [w, into = into, back = back, threads](float* px, long width, long height,
+                                                      int channels, const int* rgb)
+        {
+            for (const OCIO::ConstCPUProcessorRcPtr& p : into)
+            {
+                ApplyToBuffer(p, px, width, height, channels, rgb, threads);
+            }
+            w(px, width, height, channels, rgb);
+            for (const OCIO::ConstCPUProcessorRcPtr& p : back)
+            {
+                ApplyToBuffer(p, px, width, height, channels, rgb, threads);
+            }
+        };
+    }
+};
+
 ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
 {
-    if (r.matte.empty() || !r.insideRelight || !r.outsideRelight)
+    const bool insideIsLook = !r.insideLook.empty();
+    const bool outsideIsLook = !r.outsideLook.empty();
+    if (r.matte.empty() || (!r.insideRelight && !insideIsLook) ||
+        (!r.outsideRelight && !outsideIsLook))
     {
         throw ParameterError(
-            "{matte=}MATTE.exr[:CHANNEL] takes a change of light inside the "
-            "matte and one outside it: give {matte}, {look_inside} and "
-            "{look_outside}");
+            "{matte=}MATTE.exr[:CHANNEL] takes a change of light (or a look of "
+            "{config}) inside the matte and one outside it: give {matte}, "
+            "{look_inside} and {look_outside}");
+    }
+    if ((r.insideRelight && insideIsLook) || (r.outsideRelight && outsideIsLook))
+    {
+        throw ParameterError(
+            "{matte}: each side is a change of light or a look of {config}, not both");
     }
     if (r.relight || !r.look.empty() || !r.lightGroups.empty())
     {
@@ -329,9 +435,107 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
             "{matte} relights each side with its own change of light: {look}, "
             "{src}/{dst} and {light_group} do not apply to it");
     }
-    if (&r.insideRelight->working() != &r.outsideRelight->working())
+    if ((insideIsLook || outsideIsLook) && r.config.empty())
+    {
+        throw ParameterError("{matte}: a side's look '" +
+                             OneLine(insideIsLook ? r.insideLook : r.outsideLook, 80) +
+                             "' is a look of {config=}DIR: give the config");
+    }
+    if (!insideIsLook && !outsideIsLook && !r.config.empty())
+    {
+        throw ParameterError(
+            "{config} holds looks, and neither {look_inside} nor {look_outside} "
+            "names one of them (give a side as a look of it, or leave {config} out)");
+    }
+    if (r.insideRelight && r.outsideRelight &&
+        &r.insideRelight->working() != &r.outsideRelight->working())
     {
         throw ParameterError("{matte}: both sides are relit in one working space");
+    }
+    // What the image is to the sides: to looks, as `apply --look` takes it;
+    // to two changes of light, as plain `apply --from --to` does.
+    ImageColourRequest colour;
+    OCIO::ConstConfigRcPtr config;
+    std::string unknown;
+    if (insideIsLook || outsideIsLook)
+    {
+        config = LoadConfig(r.config);
+        colour.working = LookWorkingSpace(r, config, unknown);
+    }
+    else
+    {
+        colour.working = &r.insideRelight->working();
+        if (!r.colorspace.empty())
+        {
+            colour.declared = NamedEncoding(r.colorspace);
+        }
+    }
+    const auto side = [&](const std::optional<RelightRequest>& relight, const std::string& look)
+    {
+        MatteSide s;
+        if (!look.empty())
+        {
+            s.form = MakeLookForm(r, config, look);
+            return s;
+        }
+        s.form = MakeRelightForm(*relight, reporter);
+        if (!config)
+        {
+            return s;
+        }
+        // A change of light is defined on linear light of known primaries:
+        // beside a look it gets the looks' pixels through the config's
+        // scene_linear, whose primaries the config shows.
+        const RgbSpace* sceneLinear = colour.working;
+        std::string why;
+        if (!sceneLinear)
+        {
+            try
+            {
+                sceneLinear = IdentifySceneLinear(config).space;
+            }
+            catch (const Exception& e)
+            {
+                why = e.what();
+            }
+        }
+        if (!sceneLinear)
+        {
+            throw ParameterError("{matte}: the change of light " + relight->src.name + " to " +
+                                 relight->dst.name + " works in linear " +
+                                 SpaceLabel(relight->working()) +
+                                 ", and it would get the looks' pixels through " + r.config +
+                                 "'s scene_linear, whose primaries are unknown (" + why +
+                                 "): give both sides as looks of the config");
+        }
+        const std::string space = LookSpace(r, config);
+        ImageEncoding linear;
+        linear.space = *sceneLinear;
+        if (!r.colorspace.empty())
+        {
+            s.into.push_back(config->getProcessor(space.c_str(), OCIO::ROLE_SCENE_LINEAR)
+                                 ->getDefaultCPUProcessor());
+        }
+        if (const OCIO::ConstCPUProcessorRcPtr p = EncodingToLinear(linear, relight->working()))
+        {
+            s.into.push_back(p);
+        }
+        if (const OCIO::ConstCPUProcessorRcPtr p = LinearToEncoding(relight->working(), linear))
+        {
+            s.back.push_back(p);
+        }
+        if (!r.colorspace.empty())
+        {
+            s.back.push_back(config->getProcessor(OCIO::ROLE_SCENE_LINEAR, space.c_str())
+                                 ->getDefaultCPUProcessor());
+        }
+        return s;
+    };
+    const MatteSide inside = side(r.insideRelight, r.insideLook);
+    const MatteSide outside = side(r.outsideRelight, r.outsideLook);
+    if (!unknown.empty())
+    {
+        reporter.note(unknown);
     }
     const Matte matte = ReadMatte(r.matte, reporter);
     const std::string first = FirstExistingInput(FrameSet(r));
@@ -341,8 +545,6 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
         ThrowIfFailed(ImageFiles().read(first, header, false));
         CheckMatteFits(matte, first, header);
     }
-    const RelightForm inside = MakeRelightForm(*r.insideRelight, reporter);
-    const RelightForm outside = MakeRelightForm(*r.outsideRelight, reporter);
     const BufferWork in = inside.work(r.threads);
     const BufferWork out = outside.work(r.threads);
     const std::vector<float>& m = matte.weights;
@@ -367,16 +569,12 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
             }
         }
     };
-    ImageColourRequest colour;
-    colour.working = &r.insideRelight->working();
-    if (!r.colorspace.empty())
-    {
-        colour.declared = NamedEncoding(r.colorspace);
-    }
     ApplyResult result;
-    result.applied = "matte " + matte.path + ":" + matte.channel + " (inside: " + inside.applied +
-                     ", outside: " + outside.applied + ")";
-    result.native = (inside.kernel || inside.native) && (outside.kernel || outside.native);
+    result.applied = "matte " + matte.path + ":" + matte.channel +
+                     " (inside: " + inside.form.applied + ", outside: " + outside.form.applied +
+                     ")";
+    result.native =
+        (inside.form.kernel || inside.form.native) && (outside.form.kernel || outside.form.native);
     FrameNotes notes(r, reporter);
     const FrameRun run =
         RunFrameSet(FrameSet(r), reporter,
@@ -413,18 +611,24 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             "and the plates do not apply to it (give the look, or the change "
             "of light)");
     }
-    if (r.look.empty() && !r.config.empty())
+    if (r.look.empty() && !r.config.empty() && r.matte.empty() && r.insideLook.empty() &&
+        r.outsideLook.empty())
     {
         throw ParameterError("{config} holds the looks {look} names: give {look=}NAME with it");
     }
     // Every path before any work: a run that cannot write fails at once.
     CheckFrameSetPaths(FrameSet(r));
+    if (!r.matte.empty() || r.insideRelight || r.outsideRelight || !r.insideLook.empty() ||
+        !r.outsideLook.empty())
+    {
+        return ApplyMatte(r, reporter);
+    }
+    if (!r.lightGroups.empty())
+    {
+        return ApplyLightGroups(r, reporter);
+    }
     ApplyResult result;
-    OCIO::ConstProcessorRcPtr processor;
-    // rootpoly without a config is applied natively: a few ns a pixel, no
-    // LUT between the fit and the pixels.
-    std::function<void(float*, size_t)> native;
-    std::optional<ClampMatrixKernel> kernel;
+    RelightForm form;
     ImageColourRequest colour;
     if (!r.look.empty())
     {
@@ -432,48 +636,19 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         {
             throw ParameterError("{look} needs {config=}DIR (or use {src}/{dst}/{method})");
         }
-        OCIO::ConstConfigRcPtr config = LoadConfig(r.config);
-        if (!config->getLook(r.look.c_str()))
-        {
-            throw Exception("look '" + r.look + "' is not in " + r.config);
-        }
-        const std::string space =
-            r.colorspace.empty() ? std::string(OCIO::ROLE_SCENE_LINEAR) : r.colorspace;
-        if (!config->getColorSpace(space.c_str()))
-        {
-            throw Exception("colour space '" + space + "' is not in " + r.config);
-        }
-        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
-        t->setSrc(space.c_str());
-        t->setDst(space.c_str());
-        t->setLooks(r.look.c_str());
-        processor = config->getProcessor(t);
-        result.applied = "look " + r.look;
+        const OCIO::ConstConfigRcPtr config = LoadConfig(r.config);
+        form = MakeLookForm(r, config, r.look);
         // The image's pixels in the look's space: as they are when the user
         // named the space; else converted from what the file says to
         // scene_linear, whose primaries the config shows.
-        if (r.colorspace.empty())
+        std::string unknown;
+        colour.working = LookWorkingSpace(r, config, unknown);
+        if (!unknown.empty())
         {
-            try
-            {
-                colour.working = IdentifySceneLinear(config).space;
-            }
-            catch (const Exception& e)
-            {
-                reporter.note("the primaries of " + r.config +
-                              "'s scene_linear are unknown, so the image goes to the look as it "
-                              "is; name its colour space in the config with {colorspace} (" +
-                              std::string(e.what()) + ")");
-            }
-        }
-        // A look whose optimised processor is a clamp and a matrix (any
-        // config's, read back from OCIO) runs on the native kernel.
-        if (const std::optional<ClampMatrixKernel> k = NativeClampMatrix(processor))
-        {
-            kernel = *k;
+            reporter.note(unknown);
         }
     }
-    else if (r.lightGroups.empty() && r.matte.empty() && !r.insideRelight && !r.outsideRelight)
+    else
     {
         if (!r.relight)
         {
@@ -486,32 +661,18 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         {
             colour.declared = NamedEncoding(r.colorspace);
         }
-        const RelightForm form = MakeRelightForm(relight, reporter);
-        processor = form.processor;
-        native = form.native;
-        kernel = form.kernel;
-        result.applied = form.applied;
+        // rootpoly without a config is applied natively: a few ns a pixel,
+        // no LUT between the fit and the pixels.
+        form = MakeRelightForm(relight, reporter);
     }
-    else if (!r.lightGroups.empty())
-    {
-        return ApplyLightGroups(r, reporter);
-    }
-    else
-    {
-        return ApplyMatte(r, reporter);
-    }
-    const BufferWork work = kernel   ? KernelWork(*kernel, r.threads)
-                            : native ? RgbWork(native, r.threads)
-                                     : ProcessorWork(processor->getOptimizedCPUProcessor(
-                                                         OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                         OCIO::OPTIMIZATION_DEFAULT),
-                                                     r.threads);
+    result.applied = form.applied;
+    const BufferWork work = form.work(r.threads);
     // Frames run on several threads at once (RunFrameSet).
     FrameNotes notes(r, reporter);
     const auto applyOne = [&](const std::string& in, const std::string& out)
     { notes.add(ApplyToImage(work, in, out, result.applied, colour), in, out); };
 
-    result.native = kernel.has_value() || bool(native);
+    result.native = form.kernel || form.native;
     const FrameRun run = RunFrameSet(FrameSet(r), reporter, applyOne);
     Counted(run, result);
     return result;

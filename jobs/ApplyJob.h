@@ -17,7 +17,7 @@ namespace bandlight::jobs
 /// One light group's change of light (`apply --light-group NAME=FROM:TO`).
 struct LightGroupRelight
 {
-    std::string group;      ///< the group's name, as the file's naming gives it
+    std::string group;       ///< the group's name, as the file's naming gives it
     RelightRequest relight;  ///< its lights, method, working space and plates
 };
 
@@ -45,11 +45,18 @@ struct ApplyRequest
     std::vector<LightGroupRelight> lightGroups;
     /// A matte for a plate lit by two lights (docs/lightgroups.md): out =
     /// m·inside(in) + (1−m)·outside(in), m the matte's channel (clamped to
-    /// 0..1), each side its own change of light. The matte's size and data
-    /// window must be the image's. Not with `look`, `relight` or light groups.
+    /// 0..1). Each side is a change of light (insideRelight) or a look of
+    /// `config` (insideLook), applied as `look` is: in `colorspace` of the
+    /// config, or its scene_linear with the image converted from what the
+    /// file says. A change of light beside a look gets the pixels in its
+    /// working space, converted from the look's space (whose primaries
+    /// must be known). The matte's size and data window must be the
+    /// image's. Not with `look`, `relight` or light groups.
     std::string matte;  ///< MATTE.exr, or MATTE.exr:channel (default A, Y, or its only channel)
     std::optional<RelightRequest> insideRelight;
     std::optional<RelightRequest> outsideRelight;
+    std::string insideLook;  ///< a look of `config` instead of insideRelight
+    std::string outsideLook;
     /// Groups the file names otherwise: group → layer prefix, or "r,g,b".
     std::map<std::string, std::string> lightGroupLayers;
     int threads = 0;  ///< 0: all cores

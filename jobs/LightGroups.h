@@ -84,9 +84,11 @@ using LightGroupWork = std::function<void(float*, long, long, int, const int*)>;
 /// beauty beyond float noise (a file whose groups are no partition of the
 /// beauty), then applies each group's work to its channels (groups without
 /// one are carried unchanged) and writes the beauty as Σ relit groups +
-/// residual (beauty − Σ groups as read), summed in double. Channels other
-/// than the groups' and the beauty's R, G, B are not touched. Throws
-/// Exception naming `file`, the group and the pixel.
+/// residual (beauty − Σ groups as read), summed in double. The works are
+/// called on blocks of whole rows, top to bottom. Channels other than the
+/// groups' and the beauty's R, G, B are not touched. Throws Exception
+/// naming `file`, the group and the first pixel at fault, before any pixel
+/// changes.
 void RelightLightGroups(const LightGroupLayout& layout,
                         const std::map<std::string, LightGroupWork>& works, float* pixels,
                         long width, long height, int channels, const std::string& file);

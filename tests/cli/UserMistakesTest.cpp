@@ -339,11 +339,11 @@ TEST_CASE("Commands say what they did and name lights after their files", "[cli]
                 .code == 0);
     // apply on one image prints one line on success.
     Result r = Bandlight("apply '" + dir + "/plate.exr' '" + dir +
-                        "/out.exr' --from A --to D65 --method bradford");
+                         "/out.exr' --from A --to D65 --method bradford");
     INFO(r.err);
     CHECK(r.code == 0);
-    CHECK(r.out == "Applied bradford_A_to_D65 to " + dir + "/plate.exr; wrote " + dir +
-                       "/out.exr\n");
+    CHECK(r.out ==
+          "Applied bradford_A_to_D65 to " + dir + "/plate.exr; wrote " + dir + "/out.exr\n");
     // A lamp whose one column is headed "value" is the file's light.
     std::ofstream lamp(dir + "/tungsten3200.csv");
     lamp << "wavelength_nm,value\n";
@@ -452,7 +452,7 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
                      "matte.exr: the matte's data window is 5x3 at (0, 0)");
         CheckOneLine(Bandlight(apply + "--matte '" + dir + "/matte.exr' --look-inside A:D65"),
                      "give --matte MATTE.exr[:CHANNEL] with --look-inside FROM:TO and "
-                     "--look-outside FROM:TO");
+                     "--look-outside FROM:TO (or looks of --config DIR)");
     }
     SECTION("a malformed --light-group")
     {
@@ -468,11 +468,87 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
     CHECK(fs::is_regular_file(out));
 }
 
+TEST_CASE(
+    "apply --matte with looks of a config: options that do not fit are one line, nothing "
+    "written",
+    "[cli][mistakes][lightgroups]")
+{
+    const std::string dir = Folder("matte_looks");
+    const std::string plate = ArnoldShot(dir + "/plate.exr");
+    {
+        const std::vector<std::string> names = {"A"};
+        OIIO::ImageSpec spec(4, 3, 1, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = names;
+        const std::vector<float> half(12, 0.5f);
+        auto matte = OIIO::ImageOutput::create(dir + "/matte.exr");
+        REQUIRE(matte);
+        REQUIRE(matte->open(dir + "/matte.exr", spec));
+        REQUIRE(matte->write_image(OIIO::TypeDesc::FLOAT, half.data()));
+        REQUIRE(matte->close());
+    }
+    REQUIRE(Bandlight("config --out '" + dir + "/cfg' --illuminants A,D65,F11 --methods bradford")
+                .code == 0);
+    const std::string out = dir + "/out.exr";
+    const std::string apply =
+        "apply '" + plate + "' '" + out + "' --matte '" + dir + "/matte.exr' ";
+    const std::string config = "--config '" + dir + "/cfg' ";
+    SECTION("a look's name without --config")
+    {
+        CheckOneLine(Bandlight(apply + "--look-inside bradford_A_to_D65 --look-outside F11:D65"),
+                     "--look-inside takes FROM:TO, or a look of --config DIR, got "
+                     "'bradford_A_to_D65'");
+    }
+    SECTION("a value that is neither a look of the config nor FROM:TO")
+    {
+        CheckOneLine(
+            Bandlight(apply + config + "--look-inside bradford_A_to_D66 --look-outside F11:D65"),
+            "--look-inside 'bradford_A_to_D66' is no look of " + dir +
+                "/cfg; its looks: bradford_A_to_D65, bradford_A_to_F11, "
+                "bradford_D65_to_A, bradford_D65_to_F11, bradford_F11_to_A, "
+                "bradford_F11_to_D65");
+        CheckOneLine(Bandlight(apply + config +
+                               "--look-inside bradford_A_to_D65 --look-outside F11:nowhere"),
+                     "--look-outside 'F11:nowhere' is no look of " + dir + "/cfg, nor FROM:TO (");
+    }
+    SECTION("--look with --matte")
+    {
+        CheckOneLine(Bandlight(apply + config +
+                               "--look bradford_A_to_D65 --look-inside bradford_A_to_D65 "
+                               "--look-outside bradford_F11_to_D65"),
+                     "--matte relights each side with its own change of light: --look");
+    }
+    SECTION("--config that neither side uses")
+    {
+        CheckOneLine(Bandlight(apply + config + "--look-inside A:D65 --look-outside F11:D65"),
+                     "--config holds looks, and neither --look-inside nor --look-outside names "
+                     "one of them");
+    }
+    SECTION("a method or the lights beside two looks")
+    {
+        CheckOneLine(Bandlight(apply + config +
+                               "--look-inside bradford_A_to_D65 --look-outside "
+                               "bradford_F11_to_D65 --method cat02"),
+                     "--look-inside and --look-outside are looks of --config, applied as they "
+                     "are: --method do not apply");
+        CheckOneLine(Bandlight(apply + "--look-inside A:D65 --look-outside F11:D65 --from A"),
+                     "--matte relights each side with its own change of light");
+    }
+    CHECK_FALSE(fs::exists(out));
+    // The good run: both looks by name, and a look beside a change of light.
+    const Result ok =
+        Bandlight(apply + config + "--look-inside bradford_A_to_D65 --look-outside F11:D65");
+    INFO(ok.err);
+    CHECK(ok.code == 0);
+    CHECK_THAT(ok.out, Contains("(inside: look bradford_A_to_D65, outside: bradford_F11_to_D65"));
+    CHECK(fs::is_regular_file(out));
+}
+
 TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, nothing written",
           "[cli][mistakes][idt]")
 {
     const std::string dir = Folder("idt");
-    const std::string d21 = std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/arri_d21_380_780_5.json";
+    const std::string d21 =
+        std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/arri_d21_380_780_5.json";
     const std::string out = " --json '" + dir + "/idt.json' --config '" + dir + "/cfg'";
     // A camera whose blue channel is dead.
     {
@@ -528,8 +604,7 @@ TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, no
         {"--camera '" + d21 + "' --lights 3200K,D55 --interpolate 3200k,5600K", "named twice"},
         {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --rootpoly 4", "--rootpoly"},
         {"--camera '" + d21 + "' --lights D55 --rootpoly 2", "--rootpoly"},
-        {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --test-set TCS",
-         "--test-set"},
+        {"--chart-rgb '" + dir + "/nan.csv' --chart TCS --light D55 --test-set TCS", "--test-set"},
     };
     for (const auto& [args, mentions] : mistakes)
     {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -338,6 +339,72 @@ TEST_CASE("RelightLightGroups keeps the residual and refuses groups that are no 
     nan[16] = std::nanf("");
     CHECK_THROWS_WITH(RelightLightGroups(l, {{"a", twice}}, nan.data(), 2, 1, 9, "x.exr"),
                       Contains("x.exr: light group 'b' is NaN at pixel (1, 0)"));
+}
+
+TEST_CASE(
+    "RelightLightGroups relights a frame of many row blocks as pixel by pixel, and names "
+    "the first pixel at fault",
+    "[jobs][lightgroups]")
+{
+    const LightGroupLayout l = FindLightGroups(
+        "x.exr",
+        {"R", "G", "B", "RGBA_a.R", "RGBA_a.G", "RGBA_a.B", "RGBA_b.R", "RGBA_b.G", "RGBA_b.B"},
+        {});
+    // 7 x 101 pixels: rows in blocks, the last one partial, split over
+    // threads within each block.
+    const long w = 7, h = 101;
+    const size_t count = size_t(w * h);
+    std::vector<float> px(9 * count);
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            const float a = 0.01f * float(p % 97) + 0.1f * float(c);
+            const float b = 0.02f * float(p % 13);
+            px[9 * p + 3 + size_t(c)] = a;
+            px[9 * p + 6 + size_t(c)] = b;
+            px[9 * p + size_t(c)] = a + b + 0.125f;  // a residual of 0.125
+        }
+    }
+    const std::vector<float> in = px;
+    // A work that depends on where the pixel is in its buffer would show a
+    // block's offset: this one depends on the value alone.
+    const auto square = [](float* p, long bw, long bh, int n, const int* rgb)
+    {
+        for (long i = 0; i < bw * bh; ++i)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                p[i * n + rgb[c]] *= p[i * n + rgb[c]];
+            }
+        }
+    };
+    RelightLightGroups(l, {{"a", square}}, px.data(), w, h, 9, "x.exr");
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (size_t c = 0; c < 3; ++c)
+        {
+            const double a = in[9 * p + 3 + c], b = in[9 * p + 6 + c];
+            const double residual = double(in[9 * p + c]) - (a + b);
+            CHECK(px[9 * p + 3 + c] == float(a * a));
+            CHECK(px[9 * p + 6 + c] == float(b));
+            CHECK(px[9 * p + c] == float(double(float(a * a)) + b + residual));
+        }
+    }
+    // Faults in two places, far apart (other threads, other blocks): the
+    // first in reading order is named, and nothing has changed.
+    std::vector<float> bad = in;
+    bad[9 * (40 * size_t(w) + 3) + 4] = 5.0f;           // (3, 40): a's G past the beauty
+    bad[9 * (90 * size_t(w) + 1) + 8] = std::nanf("");  // (1, 90): b's B NaN
+    const std::vector<float> before = bad;
+    CHECK_THROWS_WITH(
+        RelightLightGroups(l, {{"a", square}}, bad.data(), w, h, 9, "x.exr"),
+        Contains("x.exr: the light groups sum to more than the beauty at pixel (3, 40)"));
+    // Bit for bit (the NaN compares unequal to itself).
+    CHECK(std::memcmp(bad.data(), before.data(), bad.size() * sizeof(float)) == 0);
+    bad[9 * (40 * size_t(w) + 3) + 4] = in[9 * (40 * size_t(w) + 3) + 4];
+    CHECK_THROWS_WITH(RelightLightGroups(l, {{"a", square}}, bad.data(), w, h, 9, "x.exr"),
+                      Contains("x.exr: light group 'b' is NaN at pixel (1, 90) (layer RGBA_b)"));
 }
 
 TEST_CASE(
@@ -787,6 +854,88 @@ TEST_CASE("A matte mixes two changes of light: m inside, 1 - m outside",
     bad.matte = dir + "/matte.exr:door";
     CHECK_THROWS_WITH(ApplyImages(bad), Contains("the matte has no channel 'door'"));
     CHECK_FALSE(fs::exists(bad.output));
+}
+
+TEST_CASE("A matte with two looks of a config is the mix of the config's own processors",
+          "[jobs][lightgroups][matte]")
+{
+    const std::string dir = Fresh("matte_looks");
+    const std::string plate = dir + "/plate.exr";
+    // Values past 1 reach the rootpoly look's shaper range, as a bright
+    // window does.
+    const auto colour = [](size_t p, size_t c)
+    { return 0.05f + 0.09f * float(p) + 0.2f * float(c); };
+    WriteExr(
+        plate, 6, 4,
+        {{{"R", "G", "B", "A"}, [&](size_t p, size_t c) { return c == 3 ? 1.0f : colour(p, c); }}});
+    const auto m = [](size_t p) { return float(p % 6) / 5.0f; };
+    WriteExr(dir + "/matte.exr", 6, 4, {{{"A"}, [&](size_t p, size_t) { return m(p); }}});
+    const std::string cfg = dir + "/cfg";
+    REQUIRE(test::Bandlight("config --out '" + cfg +
+                            "' --illuminants A,D65,F11 --methods rootpoly,bradford")
+                .code == 0);
+    const std::string apply = "apply '" + plate + "' '" + dir + "/%s.exr' --config '" + cfg +
+                              "' --matte '" + dir + "/matte.exr' ";
+    const auto run = [&](const std::string& out, const std::string& sides)
+    {
+        std::string args = apply;
+        args.replace(args.find("%s"), 2, out);
+        const test::Result r = test::Bandlight(args + sides);
+        INFO(r.err);
+        REQUIRE(r.code == 0);
+        return ReadExr(dir + "/" + out + ".exr")[0];
+    };
+    const Exr::Part looks =
+        run("looks", "--look-inside rootpoly_A_to_D65 --look-outside bradford_F11_to_D65");
+
+    // The looks as OpenColorIO applies them from the written config, in its
+    // scene_linear (the plate says nothing, so it is taken as ACEScg, the
+    // config's scene_linear: no conversion).
+    const OCIO::ConstConfigRcPtr config =
+        OCIO::Config::CreateFromFile((cfg + "/config.ocio").c_str());
+    const auto byOcio = [&](const std::string& look, size_t p)
+    {
+        OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();
+        t->setSrc(OCIO::ROLE_SCENE_LINEAR);
+        t->setDst(OCIO::ROLE_SCENE_LINEAR);
+        t->setLooks(look.c_str());
+        float rgb[3] = {colour(p, 0), colour(p, 1), colour(p, 2)};
+        config->getProcessor(t)->getDefaultCPUProcessor()->applyRGB(rgb);
+        return std::vector<float>(rgb, rgb + 3);
+    };
+    const char* channels[3] = {"R", "G", "B"};
+    for (size_t p = 0; p < 24; ++p)
+    {
+        const std::vector<float> in = byOcio("rootpoly_A_to_D65", p);
+        const std::vector<float> out = byOcio("bradford_F11_to_D65", p);
+        for (int c = 0; c < 3; ++c)
+        {
+            const double expected =
+                double(m(p)) * in[size_t(c)] + (1.0 - double(m(p))) * out[size_t(c)];
+            INFO("pixel " << p << " channel " << channels[c]);
+            CHECK(looks.at(p, channels[c]) == Approx(expected).margin(1e-6));
+        }
+        CHECK(looks.at(p, "A") == 1.0f);
+    }
+
+    // A look beside a change of light: the change as plain apply makes it.
+    const Exr::Part mixed =
+        run("mixed", "--look-inside rootpoly_A_to_D65 --look-outside F11:D65 --method bradford");
+    const test::Result plain = test::Bandlight("apply '" + plate + "' '" + dir +
+                                               "/plain.exr' --from F11 --to D65 --method bradford");
+    REQUIRE(plain.code == 0);
+    const Exr::Part outside = ReadExr(dir + "/plain.exr")[0];
+    for (size_t p = 0; p < 24; ++p)
+    {
+        const std::vector<float> in = byOcio("rootpoly_A_to_D65", p);
+        for (int c = 0; c < 3; ++c)
+        {
+            const double expected =
+                double(m(p)) * in[size_t(c)] + (1.0 - double(m(p))) * outside.at(p, channels[c]);
+            INFO("pixel " << p << " channel " << channels[c]);
+            CHECK(mixed.at(p, channels[c]) == Approx(expected).margin(1e-6));
+        }
+    }
 }
 
 TEST_CASE("apply --light-group on frame sets: --skip-existing and --keep-going as plain apply",
