@@ -357,7 +357,7 @@ IdtError ErrorAgainst(const ColourFit& d, const Mat3& idt, const Mat3& reference
 }
 
 /// What every fit of a request shares: the working space, the adaptation of
-/// each light's white to its white, and the observer.
+/// each light's white to the working white, and the observer.
 struct FitSetting
 {
     const RgbSpace& working;
