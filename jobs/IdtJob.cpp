@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -134,62 +135,75 @@ Vec3 CheckedNeutral(const std::vector<double>& n)
     return {n[0], n[1], n[2]};
 }
 
-/// Options that do not go together, refused before anything is read.
-void CheckOptions(const IdtRequest& r)
+/// What the IDTs are fitted from: the camera's spectral sensitivities, or a
+/// chart photographed under one light.
+enum class IdtSource
+{
+    SENSITIVITIES,
+    CHART
+};
+
+/// Any chart option asks for a chart IDT (CheckChartOptions then asks for
+/// all three).
+IdtSource SourceOf(const IdtRequest& r)
 {
     const bool chart = !r.chartRgb.empty() || !r.chart.empty() || !r.chartLight.empty();
-    if (chart)
+    return chart ? IdtSource::CHART : IdtSource::SENSITIVITIES;
+}
+
+/// A chart IDT: the chart's three options together, none of the
+/// sensitivities'.
+void CheckChartOptions(const IdtRequest& r)
+{
+    if (r.chartRgb.empty() || r.chart.empty() || r.chartLight.empty())
     {
-        if (r.chartRgb.empty() || r.chart.empty() || r.chartLight.empty())
-        {
-            throw ParameterError("a chart IDT needs {chart_rgb}, {chart} and {light} together");
-        }
-        if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 && r.chartRootPolynomial != 3)
-        {
-            throw ParameterError(
-                "{rootpoly} is the degree of the chart's root polynomial: 2 "
-                "or 3, not " +
-                std::to_string(r.chartRootPolynomial));
-        }
-        if (!r.camera.empty() || !r.lights.empty() || !r.interpolate.empty() ||
-            !r.asShotNeutral.empty() || !r.training.empty())
-        {
-            throw ParameterError(
-                "a chart IDT is fitted on the chart under its {light}: "
-                "{camera}, {lights}, {training}, {interpolate} and "
-                "{as_shot_neutral} are for sensitivities");
-        }
+        throw ParameterError("a chart IDT needs {chart_rgb}, {chart} and {light} together");
     }
-    else
+    if (r.chartRootPolynomial != 0 && r.chartRootPolynomial != 2 && r.chartRootPolynomial != 3)
     {
-        if (r.camera.empty())
-        {
-            throw ParameterError(
-                "give the camera's sensitivities as {camera=}FILE (or a chart "
-                "with {chart_rgb}, {chart} and {light})");
-        }
-        if (r.lights.empty() && r.interpolate.empty() && r.asShotNeutral.empty())
-        {
-            throw ParameterError(
-                "name the lights to fit IDTs for ({lights}), two to "
-                "{interpolate} between, or an {as_shot_neutral}");
-        }
+        throw ParameterError(
+            "{rootpoly} is the degree of the chart's root polynomial: 2 "
+            "or 3, not " +
+            std::to_string(r.chartRootPolynomial));
     }
-    if (!chart && r.chartRootPolynomial != 0)
+    if (!r.camera.empty() || !r.lights.empty() || !r.interpolate.empty() ||
+        !r.asShotNeutral.empty() || !r.training.empty())
+    {
+        throw ParameterError(
+            "a chart IDT is fitted on the chart under its {light}: "
+            "{camera}, {lights}, {training}, {interpolate} and "
+            "{as_shot_neutral} are for sensitivities");
+    }
+}
+
+/// A sensitivity IDT: a camera, something to fit for it, and no chart's
+/// root polynomial.
+void CheckSensitivityOptions(const IdtRequest& r)
+{
+    if (r.camera.empty())
+    {
+        throw ParameterError(
+            "give the camera's sensitivities as {camera=}FILE (or a chart "
+            "with {chart_rgb}, {chart} and {light})");
+    }
+    if (r.lights.empty() && r.interpolate.empty() && r.asShotNeutral.empty())
+    {
+        throw ParameterError(
+            "name the lights to fit IDTs for ({lights}), two to "
+            "{interpolate} between, or an {as_shot_neutral}");
+    }
+    if (r.chartRootPolynomial != 0)
     {
         throw ParameterError(
             "{rootpoly} is fitted on a chart: give {chart_rgb}, {chart} and "
             "{light}");
     }
-    if (!r.interpolate.empty() && r.interpolate.size() != 2)
-    {
-        throw ParameterError("{interpolate} takes two lights, not " +
-                             std::to_string(r.interpolate.size()));
-    }
-    if (!r.asShotNeutral.empty())
-    {
-        CheckedNeutral(r.asShotNeutral);
-    }
+}
+
+/// The config outputs: a new one into {config}, or {base} extended into
+/// {out} ({base_space} only with a base).
+void CheckConfigOptions(const IdtRequest& r)
+{
     if (!r.base.empty() && r.out.empty())
     {
         throw ParameterError("{base} is extended into a folder of its own: give {out=}DIR");
@@ -212,6 +226,86 @@ void CheckOptions(const IdtRequest& r)
             "{config} writes a new config, {base} with {out} extends one: "
             "give one of them");
     }
+}
+
+/// Options that do not go together, refused before anything is read.
+void CheckOptions(const IdtRequest& r)
+{
+    switch (SourceOf(r))
+    {
+        case IdtSource::CHART:
+            CheckChartOptions(r);
+            break;
+        case IdtSource::SENSITIVITIES:
+            CheckSensitivityOptions(r);
+            break;
+    }
+    if (!r.interpolate.empty() && r.interpolate.size() != 2)
+    {
+        throw ParameterError("{interpolate} takes two lights, not " +
+                             std::to_string(r.interpolate.size()));
+    }
+    if (!r.asShotNeutral.empty())
+    {
+        CheckedNeutral(r.asShotNeutral);
+    }
+    CheckConfigOptions(r);
+}
+
+/// Every output can be written and no input is written over, before any
+/// work (OutputPlan::check).
+void CheckOutputPaths(const IdtRequest& r)
+{
+    OutputPlan plan;
+    if (!r.json.empty())
+    {
+        plan.file("{json}", r.json);
+    }
+    if (!r.config.empty())
+    {
+        plan.folder("{config}", r.config, {"config.ocio"});
+    }
+    if (!r.out.empty())
+    {
+        plan.folder("{out}", r.out, {"config.ocio"});
+    }
+    for (const std::string* in : {&r.camera, &r.training, &r.chartRgb, &r.base})
+    {
+        if (!in->empty())
+        {
+            plan.input(*in);
+        }
+    }
+    plan.check();
+}
+
+/// The {base} config (null without one), read and its scene_linear's
+/// primaries identified (or {base_space} checked) before any fit.
+OCIO_NAMESPACE::ConstConfigRcPtr ReadBase(const IdtRequest& r)
+{
+    if (r.base.empty())
+    {
+        return nullptr;
+    }
+    OCIO_NAMESPACE::ConstConfigRcPtr base = ReadConfigFile(r.base, false);
+    if (r.baseSpace.empty())
+    {
+        try
+        {
+            IdentifySceneLinear(base);
+        }
+        catch (const ParameterError&)
+        {
+            throw ParameterError("cannot tell the primaries of the scene_linear space of {base} " +
+                                 ShowPath(r.base) + ": name them with {base_space} (" +
+                                 RgbSpaceChoices() + ")");
+        }
+    }
+    else
+    {
+        FindRgbSpace(r.baseSpace);
+    }
+    return base;
 }
 
 nlohmann::ordered_json MatrixJson(const Mat3& m)
@@ -262,254 +356,287 @@ IdtError ErrorAgainst(const ColourFit& d, const Mat3& idt, const Mat3& reference
     return e;
 }
 
-}  // namespace
-
-IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
+/// What every fit of a request shares: the working space, the adaptation of
+/// each light's white to the working white, and the observer.
+struct FitSetting
 {
-    CheckOptions(r);
-    // Outputs before any work.
-    {
-        OutputPlan plan;
-        if (!r.json.empty())
-        {
-            plan.file("{json}", r.json);
-        }
-        if (!r.config.empty())
-        {
-            plan.folder("{config}", r.config, {"config.ocio"});
-        }
-        if (!r.out.empty())
-        {
-            plan.folder("{out}", r.out, {"config.ocio"});
-        }
-        for (const std::string* in : {&r.camera, &r.training, &r.chartRgb, &r.base})
-        {
-            if (!in->empty())
-            {
-                plan.input(*in);
-            }
-        }
-        plan.check();
-    }
-    const RgbSpace& working = FindRgbSpace(r.workingSpace);
-    // The base is read, and its scene_linear identified, before any fit.
-    OCIO_NAMESPACE::ConstConfigRcPtr base;
-    if (!r.base.empty())
-    {
-        base = ReadConfigFile(r.base, false);
-        if (r.baseSpace.empty())
-        {
-            try
-            {
-                IdentifySceneLinear(base);
-            }
-            catch (const ParameterError&)
-            {
-                throw ParameterError(
-                    "cannot tell the primaries of the scene_linear space of {base} " +
-                    ShowPath(r.base) + ": name them with {base_space} (" + RgbSpaceChoices() + ")");
-            }
-        }
-        else
-        {
-            FindRgbSpace(r.baseSpace);
-        }
-    }
-    const AdaptationMethod adaptation = ParsePlates("balanced", r.adaptation).adaptation;
-    const Observer observer = ParseObserver(r.observer);
+    const RgbSpace& working;
+    AdaptationMethod adaptation;
+    Observer observer;
 
-    IdtResult result;
-    result.workingSpace = working.name;
-    result.adaptation = AdaptationName(adaptation);
-    const std::vector<NamedSpectrum> training =
-        r.training.empty() ? Rawtoaces190() : ResolveReflectances(r.training, reporter);
-    result.trainingName = r.training.empty() ? "rawtoaces 190" : r.training;
-    const std::vector<NamedSpectrum> test = ResolveReflectances(r.testSet, reporter);
-    result.testName = r.testSet;
-    result.trainingCount = int(training.size());
-    result.testCount = int(test.size());
-
-    // Every light and the camera's view of it, before any fit: a dead
-    // channel or a light a channel does not see is refused here.
-    struct Planned
+    IdtProblem problem(const SpectralCamera& camera, const Spectrum& light) const
     {
-        Light light;
-        std::unique_ptr<IdtProblem> problem;
+        return IdtProblem(camera, light, working, adaptation, observer);
+    }
+};
+
+/// The remittances the IDTs are fitted on (training) and also measured on
+/// (test), with the names the errors are reported under.
+struct RemittanceSets
+{
+    std::vector<NamedSpectrum> training;
+    std::string trainingName;
+    std::vector<NamedSpectrum> test;
+    std::string testName;
+};
+
+/// {training} (rawtoaces' 190 when empty), then {test_set}.
+RemittanceSets ResolveRemittances(const IdtRequest& r, Reporter& reporter)
+{
+    RemittanceSets s;
+    s.training = r.training.empty() ? Rawtoaces190() : ResolveReflectances(r.training, reporter);
+    s.trainingName = r.training.empty() ? "rawtoaces 190" : r.training;
+    s.test = ResolveReflectances(r.testSet, reporter);
+    s.testName = r.testSet;
+    return s;
+}
+
+/// A light of a sensitivity IDT and the camera's view of it.
+struct PlannedLight
+{
+    Light light;
+    std::unique_ptr<IdtProblem> problem;
+};
+
+/// Every light ({lights}, then the {interpolate} pair, whose indices go into
+/// `result`) and the camera's view of it, before any fit: a dead channel or
+/// a light a channel does not see is refused here, naming the light.
+std::vector<PlannedLight> PlanLights(const IdtRequest& r, const SpectralCamera& camera,
+                                     const FitSetting& s, Reporter& reporter, IdtResult& result)
+{
+    std::vector<PlannedLight> planned;
+    const auto plan = [&](const std::string& text)
+    {
+        PlannedLight p{ResolveIdtLight(text, reporter), nullptr};
+        try
+        {
+            p.problem = std::make_unique<IdtProblem>(camera, p.light.spectrum, s.working,
+                                                     s.adaptation, s.observer);
+        }
+        catch (const FileError&)
+        {
+            throw;
+        }
+        catch (const Exception& e)
+        {
+            throw Exception(std::string(e.what()) + " (" + p.light.name + ")");
+        }
+        planned.push_back(std::move(p));
     };
-    std::vector<Planned> planned;
-    std::unique_ptr<SpectralCamera> camera;
-    std::vector<Vec3> chartRgb;
-    std::vector<NamedSpectrum> chart;
-    Light chartLight;
-    if (!r.chartRgb.empty())
+    for (const std::string& l : r.lights)
     {
-        chart = ResolveReflectances(r.chart, reporter);
-        chartRgb = ReadChartRgb(r.chartRgb);
-        chartLight = ResolveIdtLight(r.chartLight, reporter);
-        if (chartRgb.size() != chart.size() || chartRgb.size() < kFewestChartPatches)
-        {
-            throw Exception(r.chartRgb + ": " + std::to_string(chartRgb.size()) +
-                            " patches of camera RGB for a chart of " +
-                            std::to_string(chart.size()) + " (" + r.chart +
-                            "): give one row per patch, in the chart's order, at least " +
-                            std::to_string(kFewestChartPatches));
-        }
-        result.camera = "chart";
-        result.chart = true;
+        plan(l);
     }
-    else
+    if (!r.interpolate.empty())
     {
-        camera = std::make_unique<SpectralCamera>(ReadCameraFile(r.camera));
-        result.camera = camera->name();
-        const auto plan = [&](const std::string& text)
-        {
-            Planned p{ResolveIdtLight(text, reporter), nullptr};
-            try
-            {
-                p.problem = std::make_unique<IdtProblem>(*camera, p.light.spectrum, working,
-                                                         adaptation, observer);
-            }
-            catch (const FileError&)
-            {
-                throw;
-            }
-            catch (const Exception& e)
-            {
-                throw Exception(std::string(e.what()) + " (" + p.light.name + ")");
-            }
-            planned.push_back(std::move(p));
-        };
-        for (const std::string& l : r.lights)
-        {
-            plan(l);
-        }
-        if (!r.interpolate.empty())
-        {
-            result.interpolateFrom = int(planned.size());
-            plan(r.interpolate[0]);
-            result.interpolateTo = int(planned.size());
-            plan(r.interpolate[1]);
-        }
-        // One colour space per light: two lights of one name would clash.
-        for (size_t i = 0; i < planned.size(); ++i)
-        {
-            for (size_t k = 0; k < i; ++k)
-            {
-                if (planned[i].light.name == planned[k].light.name)
-                {
-                    throw ParameterError("the light '" + planned[i].light.name +
-                                         "' is named twice ({lights}, {interpolate}): give "
-                                         "each once");
-                }
-            }
-        }
+        result.interpolateFrom = int(planned.size());
+        plan(r.interpolate[0]);
+        result.interpolateTo = int(planned.size());
+        plan(r.interpolate[1]);
     }
-
-    // The fits.
-    const auto entryFor = [&](const std::string& name, const IdtProblem& problem)
-    {
-        IdtEntry e;
-        e.light = name;
-        const CctDuv cd = ComputeCct(problem.whiteXyz());
-        e.cct = cd.cctK;
-        e.duv = cd.duv;
-        e.fit = FitIdtOptimal(problem, training, camera->label());
-        e.errors.push_back(problem.errors(e.fit.matrix, training, result.trainingName));
-        e.errors.push_back(problem.errors(e.fit.matrix, test, result.testName));
-        return e;
-    };
+    // One colour space per light: two lights of one name would clash.
     for (size_t i = 0; i < planned.size(); ++i)
     {
-        result.idts.push_back(entryFor(planned[i].light.name, *planned[i].problem));
-    }
-    if (result.chart)
-    {
-        IdtEntry e;
-        e.light = chartLight.name;
-        const SurfaceRenderer eye(chartLight.spectrum, working, observer);
-        const CctDuv cd = ComputeCct(eye.rgbToXyz() * eye.white());
-        e.cct = cd.cctK;
-        e.duv = cd.duv;
-        e.fit = FitChartIdt(chartRgb, chart, chartLight.spectrum, working, adaptation, observer);
-        result.chartNeutral = chart[FlattestRemittance(chart)].name;
-        // The chart is its own training set: its error is the fit's.
-        const ColourFit d =
-            ChartFitData(chartRgb, chart, chartLight.spectrum, working, adaptation, observer);
-        const auto chartError = [&](const std::function<Vec3(const Vec3&)>& apply)
+        for (size_t k = 0; k < i; ++k)
         {
-            IdtError err;
-            err.set = r.chart;
-            err.count = int(chart.size());
-            std::vector<double> de;
-            for (size_t i = 0; i < d.input.size(); ++i)
+            if (planned[i].light.name == planned[k].light.name)
             {
-                de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * apply(d.input[i]), d.labWhite),
-                                        XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
-                err.mean += de.back() / double(d.input.size());
-                err.max = std::max(err.max, de.back());
+                throw ParameterError("the light '" + planned[i].light.name +
+                                     "' is named twice ({lights}, {interpolate}): give "
+                                     "each once");
             }
-            err.p95 = Percentile(de, 0.95);
-            return err;
-        };
-        e.errors.push_back(chartError([&](const Vec3& c) { return Vec3(e.fit.matrix * c); }));
-        if (r.chartRootPolynomial != 0)
-        {
-            result.chartRootPolynomial = FitRootPolynomial(d, r.chartRootPolynomial);
-            result.chartRootPolynomialError =
-                chartError([&](const Vec3& c) { return result.chartRootPolynomial.apply(c); });
-            result.hasChartRootPolynomial = true;
         }
-        result.trainingName = r.chart;
-        result.trainingCount = int(chart.size());
-        result.testName.clear();
-        result.testCount = 0;
-        result.idts.push_back(e);
+    }
+    return planned;
+}
+
+/// The IDT of one light, reported as `name`: fitted on the training set,
+/// its ΔE00 on the training set, then on the test set.
+IdtEntry FitEntry(const std::string& name, const IdtProblem& problem, const RemittanceSets& sets,
+                  const std::string& cameraLabel)
+{
+    IdtEntry e;
+    e.light = name;
+    const CctDuv cd = ComputeCct(problem.whiteXyz());
+    e.cct = cd.cctK;
+    e.duv = cd.duv;
+    e.fit = FitIdtOptimal(problem, sets.training, cameraLabel);
+    e.errors.push_back(problem.errors(e.fit.matrix, sets.training, sets.trainingName));
+    e.errors.push_back(problem.errors(e.fit.matrix, sets.test, sets.testName));
+    return e;
+}
+
+/// {as_shot_neutral}: the light it stands for (EstimateAsShot) and that
+/// light's IDT, reported after the named lights'.
+void AddAsShot(const IdtRequest& r, const SpectralCamera& camera, const FitSetting& s,
+               const RemittanceSets& sets, IdtResult& result)
+{
+    result.asShotNeutral = r.asShotNeutral;
+    result.asShot = EstimateAsShot(camera, CheckedNeutral(r.asShotNeutral), s.working, s.adaptation,
+                                   s.observer);
+    result.hasAsShot = true;
+    std::ostringstream name;
+    name << "as shot (" << result.asShot.family << " " << std::lround(result.asShot.familyKelvin)
+         << "K)";
+    const IdtProblem problem = s.problem(camera, result.asShot.light);
+    result.idts.push_back(FitEntry(name.str(), problem, sets, camera.label()));
+}
+
+/// The IDT interpolated between the pair's calibrations at `kelvin`
+/// (InterpolateIdt, extrapolated and with DNG's clamp) against one fitted
+/// there, and each against the truth: ΔE00 on the test set.
+IdtInterpolationPoint SweepPoint(double kelvin, const IdtCalibration& a, const IdtCalibration& b,
+                                 const SpectralCamera& camera, const FitSetting& s,
+                                 const RemittanceSets& sets)
+{
+    const IdtProblem problem = s.problem(camera, IdtLightForCct(kelvin));
+    const IdtFit direct = FitIdtOptimal(problem, sets.training, camera.label());
+    const Mat3 m = InterpolateIdt(a, b, problem, true);
+    const Mat3 clamped = InterpolateIdt(a, b, problem, false);
+    const ColourFit d = problem.data(sets.test);
+    IdtInterpolationPoint p;
+    p.cct = kelvin;
+    const IdtError e = ErrorAgainst(d, m, direct.matrix);
+    p.meanVsDirect = e.mean;
+    p.p95VsDirect = e.p95;
+    p.maxVsDirect = e.max;
+    p.clampedMeanVsDirect = ErrorAgainst(d, clamped, direct.matrix).mean;
+    p.interpolatedMean = problem.errors(m, sets.test, sets.testName).mean;
+    p.directMean = problem.errors(direct.matrix, sets.test, sets.testName).mean;
+    p.clampedMean = problem.errors(clamped, sets.test, sets.testName).mean;
+    return p;
+}
+
+/// {interpolate}: the calibrations of the pair's fitted IDTs, and the sweep
+/// over defaults::IDT_SWEEP_MIN_K–IDT_SWEEP_MAX_K.
+void SweepInterpolation(const std::vector<PlannedLight>& planned, const SpectralCamera& camera,
+                        const FitSetting& s, const RemittanceSets& sets, IdtResult& result)
+{
+    const int ends[2] = {result.interpolateFrom, result.interpolateTo};
+    for (int end = 0; end < 2; ++end)
+    {
+        const size_t i = size_t(ends[end]);
+        result.interpolateCalibrations[end] =
+            CalibrationOf(*planned[i].problem, result.idts[i].fit);
+    }
+    const IdtCalibration& a = result.interpolateCalibrations[0];
+    const IdtCalibration& b = result.interpolateCalibrations[1];
+    for (double k = defaults::IDT_SWEEP_MIN_K; k <= defaults::IDT_SWEEP_MAX_K + 1e-9;
+         k += defaults::IDT_SWEEP_STEP_K)
+    {
+        result.interpolation.push_back(SweepPoint(k, a, b, camera, s, sets));
+    }
+}
+
+/// IDTs from the camera's sensitivities: one per light, then the as-shot
+/// light's, then the interpolation sweep.
+void FitFromSensitivities(const IdtRequest& r, const FitSetting& s, const RemittanceSets& sets,
+                          Reporter& reporter, IdtResult& result)
+{
+    const SpectralCamera camera(ReadCameraFile(r.camera));
+    result.camera = camera.name();
+    const std::vector<PlannedLight> planned = PlanLights(r, camera, s, reporter, result);
+    for (const PlannedLight& p : planned)
+    {
+        result.idts.push_back(FitEntry(p.light.name, *p.problem, sets, camera.label()));
     }
     if (!r.asShotNeutral.empty())
     {
-        result.asShotNeutral = r.asShotNeutral;
-        result.asShot =
-            EstimateAsShot(*camera, CheckedNeutral(r.asShotNeutral), working, adaptation, observer);
-        result.hasAsShot = true;
-        std::ostringstream name;
-        name << "as shot (" << result.asShot.family << " "
-             << std::lround(result.asShot.familyKelvin) << "K)";
-        const IdtProblem problem(*camera, result.asShot.light, working, adaptation, observer);
-        result.idts.push_back(entryFor(name.str(), problem));
+        AddAsShot(r, camera, s, sets, result);
     }
     if (result.interpolateFrom >= 0)
     {
-        for (int end = 0; end < 2; ++end)
-        {
-            const size_t i = size_t(end == 0 ? result.interpolateFrom : result.interpolateTo);
-            result.interpolateCalibrations[end] =
-                CalibrationOf(*planned[i].problem, result.idts[i].fit);
-        }
-        const IdtCalibration& a = result.interpolateCalibrations[0];
-        const IdtCalibration& b = result.interpolateCalibrations[1];
-        for (double k = defaults::IDT_SWEEP_MIN_K; k <= defaults::IDT_SWEEP_MAX_K + 1e-9;
-             k += defaults::IDT_SWEEP_STEP_K)
-        {
-            const IdtProblem problem(*camera, IdtLightForCct(k), working, adaptation, observer);
-            const IdtFit direct = FitIdtOptimal(problem, training, camera->label());
-            const Mat3 m = InterpolateIdt(a, b, problem, true);
-            const Mat3 clamped = InterpolateIdt(a, b, problem, false);
-            const ColourFit d = problem.data(test);
-            IdtInterpolationPoint p;
-            p.cct = k;
-            const IdtError e = ErrorAgainst(d, m, direct.matrix);
-            p.meanVsDirect = e.mean;
-            p.p95VsDirect = e.p95;
-            p.maxVsDirect = e.max;
-            p.clampedMeanVsDirect = ErrorAgainst(d, clamped, direct.matrix).mean;
-            p.interpolatedMean = problem.errors(m, test, r.testSet).mean;
-            p.directMean = problem.errors(direct.matrix, test, r.testSet).mean;
-            p.clampedMean = problem.errors(clamped, test, r.testSet).mean;
-            result.interpolation.push_back(p);
-        }
+        SweepInterpolation(planned, camera, s, sets, result);
     }
+}
 
-    // The outputs, committed together.
+/// A photographed chart: its remittances, each patch's camera RGB (same
+/// order) and the light it was shot under.
+struct ChartShot
+{
+    std::vector<NamedSpectrum> chart;
+    std::vector<Vec3> rgb;
+    Light light;
+};
+
+ChartShot ReadChart(const IdtRequest& r, Reporter& reporter)
+{
+    ChartShot c;
+    c.chart = ResolveReflectances(r.chart, reporter);
+    c.rgb = ReadChartRgb(r.chartRgb);
+    c.light = ResolveIdtLight(r.chartLight, reporter);
+    if (c.rgb.size() != c.chart.size() || c.rgb.size() < kFewestChartPatches)
+    {
+        throw Exception(r.chartRgb + ": " + std::to_string(c.rgb.size()) +
+                        " patches of camera RGB for a chart of " + std::to_string(c.chart.size()) +
+                        " (" + r.chart +
+                        "): give one row per patch, in the chart's order, at least " +
+                        std::to_string(kFewestChartPatches));
+    }
+    return c;
+}
+
+/// ΔE00 of `apply` on the chart's balanced camera RGB (d.input) against the
+/// patches' colours under the light (d.target), L*a*b* relative to
+/// d.labWhite, reported under `set`.
+IdtError ChartError(const ColourFit& d, const std::string& set,
+                    const std::function<Vec3(const Vec3&)>& apply)
+{
+    IdtError err;
+    err.set = set;
+    err.count = int(d.input.size());
+    std::vector<double> de;
+    for (size_t i = 0; i < d.input.size(); ++i)
+    {
+        de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * apply(d.input[i]), d.labWhite),
+                                XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
+        err.mean += de.back() / double(d.input.size());
+        err.max = std::max(err.max, de.back());
+    }
+    err.p95 = Percentile(de, 0.95);
+    return err;
+}
+
+/// The IDT from a chart, which is its own training set (its error is the
+/// fit's; no test set), with {rootpoly} the root polynomial's beside it.
+void FitFromChart(const IdtRequest& r, const FitSetting& s, Reporter& reporter, IdtResult& result)
+{
+    const ChartShot shot = ReadChart(r, reporter);
+    const Spectrum& light = shot.light.spectrum;
+    result.camera = "chart";
+    result.chart = true;
+    IdtEntry e;
+    e.light = shot.light.name;
+    const SurfaceRenderer eye(light, s.working, s.observer);
+    const CctDuv cd = ComputeCct(eye.rgbToXyz() * eye.white());
+    e.cct = cd.cctK;
+    e.duv = cd.duv;
+    e.fit = FitChartIdt(shot.rgb, shot.chart, light, s.working, s.adaptation, s.observer);
+    result.chartNeutral = shot.chart[FlattestRemittance(shot.chart)].name;
+    const ColourFit d =
+        ChartFitData(shot.rgb, shot.chart, light, s.working, s.adaptation, s.observer);
+    e.errors.push_back(
+        ChartError(d, r.chart, [&](const Vec3& c) { return Vec3(e.fit.matrix * c); }));
+    if (r.chartRootPolynomial != 0)
+    {
+        result.chartRootPolynomial = FitRootPolynomial(d, r.chartRootPolynomial);
+        result.chartRootPolynomialError = ChartError(
+            d, r.chart, [&](const Vec3& c) { return result.chartRootPolynomial.apply(c); });
+        result.hasChartRootPolynomial = true;
+    }
+    result.trainingName = r.chart;
+    result.trainingCount = int(shot.chart.size());
+    result.testName.clear();
+    result.testCount = 0;
+    result.idts.push_back(e);
+}
+
+/// The config (a new one in {config}, or {base} extended into {out}), each
+/// IDT an input colour space named in `result`, and the JSON document:
+/// committed together.
+void WriteOutputs(const IdtRequest& r, const OCIO_NAMESPACE::ConstConfigRcPtr& base,
+                  Reporter& reporter, IdtResult& result)
+{
     OutputSet outputs;
     if (!r.config.empty() || !r.out.empty())
     {
@@ -517,14 +644,14 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         c.out = r.config.empty() ? r.out : r.config;
         c.base = r.base;
         c.baseConfig = base;
-        c.workingSpace = r.base.empty() ? working.name : r.baseSpace;
+        c.workingSpace = r.base.empty() ? result.workingSpace : r.baseSpace;
         c.observer = r.observer;
         c.looks = false;
         for (IdtEntry& e : result.idts)
         {
             e.colorSpace = IdtColorSpaceName(result.camera, e.light);
             c.inputSpaces.push_back({e.colorSpace, Describe(e, result.camera, result),
-                                     e.fit.rawToWorking(), working.name});
+                                     e.fit.rawToWorking(), result.workingSpace});
         }
         MakeConfig(c, reporter, &outputs);
         result.written.push_back(*c.out + "/config.ocio");
@@ -536,6 +663,37 @@ IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
         result.written.push_back(r.json);
     }
     outputs.commit();
+}
+
+}  // namespace
+
+IdtResult MakeIdt(const IdtRequest& r, Reporter& reporter)
+{
+    CheckOptions(r);
+    CheckOutputPaths(r);
+    const RgbSpace& working = FindRgbSpace(r.workingSpace);
+    const OCIO_NAMESPACE::ConstConfigRcPtr base = ReadBase(r);
+    const FitSetting setting{working, ParsePlates("balanced", r.adaptation).adaptation,
+                             ParseObserver(r.observer)};
+
+    IdtResult result;
+    result.workingSpace = working.name;
+    result.adaptation = AdaptationName(setting.adaptation);
+    const RemittanceSets sets = ResolveRemittances(r, reporter);
+    result.trainingName = sets.trainingName;
+    result.trainingCount = int(sets.training.size());
+    result.testName = sets.testName;
+    result.testCount = int(sets.test.size());
+    switch (SourceOf(r))
+    {
+        case IdtSource::CHART:
+            FitFromChart(r, setting, reporter, result);
+            break;
+        case IdtSource::SENSITIVITIES:
+            FitFromSensitivities(r, setting, sets, reporter, result);
+            break;
+    }
+    WriteOutputs(r, base, reporter, result);
     return result;
 }
 

@@ -357,6 +357,112 @@ Mat3 InterpolateIdt(const IdtCalibration& c1, const IdtCalibration& c2, const Id
     return target.rgbToXyz().inverse() * cat * cameraToXyz * neutral.asDiagonal();
 }
 
+namespace
+{
+
+/// A family of lights an as-shot neutral is matched against, by
+/// temperature (K) from `lowK` to kHighestCctK.
+struct LightFamily
+{
+    const char* name;
+    double lowK;
+    Spectrum (*light)(double kelvin);
+};
+
+/// CIE daylight from kDaylightFromK as rawtoaces and DNG take it, a
+/// Planckian radiator over the whole range.
+const LightFamily kLightFamilies[] = {
+    {"planckian", kLowestCctK, [](double k) { return Planckian(k); }},
+    {"daylight", kDaylightFromK, [](double k) { return Daylight(k); }},
+};
+
+/// The temperature of a family whose camera response matches a neutral.
+struct FamilyMatch
+{
+    double kelvin = 0.0;
+    double residual = 0.0;  ///< log-chromaticity mismatch (infinite: no response in a channel)
+};
+
+/// The light of `family` whose raw response has the log chromaticity
+/// `target`: a 0.5 mired grid, then golden section inside the grid step
+/// either side of its best point.
+FamilyMatch MatchFamily(const SpectralCamera& camera, const Eigen::Vector2d& target,
+                        const LightFamily& family)
+{
+    // Mismatch of the response at `mired` (1e6 / K).
+    const auto mismatch = [&](double mired)
+    {
+        const Vec3 r =
+            Response(camera, family.light(std::clamp(1e6 / mired, family.lowK, kHighestCctK)));
+        if (!(r.minCoeff() > 0.0))
+        {
+            return std::numeric_limits<double>::infinity();
+        }
+        return (LogChromaticity(r) - target).norm();
+    };
+    const double lo = 1e6 / kHighestCctK, hi = 1e6 / family.lowK;
+    constexpr double kStepMired = 0.5;
+    double at = lo, atValue = std::numeric_limits<double>::infinity();
+    for (double m = lo; m <= hi + 1e-9; m += kStepMired)
+    {
+        const double v = mismatch(std::min(m, hi));
+        if (v < atValue)
+        {
+            atValue = v;
+            at = std::min(m, hi);
+        }
+    }
+    // Golden section inside the grid step either side.
+    double a = std::max(lo, at - kStepMired), b = std::min(hi, at + kStepMired);
+    const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
+    double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+    double f1 = mismatch(x1), f2 = mismatch(x2);
+    for (int i = 0; i < 80 && b - a > 1e-10; ++i)
+    {
+        if (f1 < f2)
+        {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - phi * (b - a);
+            f1 = mismatch(x1);
+        }
+        else
+        {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + phi * (b - a);
+            f2 = mismatch(x2);
+        }
+    }
+    const double mired = f1 < f2 ? x1 : x2;
+    const double value = std::min(f1, f2);
+    return {1e6 / (value <= atValue ? mired : at), std::min(value, atValue)};
+}
+
+/// The standard illuminant whose white (CIE 1931 2°) is nearest `uv` in
+/// CIE 1960 UCS.
+std::string NearestStandardIlluminant(const Eigen::Vector2d& uv)
+{
+    std::string nearestName;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const std::string& name : StandardIlluminantNames())
+    {
+        const double dist =
+            (XyzToUv1960(IntegrateXyz(BuiltinIlluminant(name), Observer::CIE1931_2DEG)) - uv)
+                .norm();
+        if (dist < nearest)
+        {
+            nearest = dist;
+            nearestName = name;
+        }
+    }
+    return nearestName;
+}
+
+}  // namespace
+
 AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
                               const RgbSpace& working, AdaptationMethod adaptation,
                               Observer observer)
@@ -369,85 +475,28 @@ AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
         }
     }
     const Eigen::Vector2d target = LogChromaticity(neutral);
-    struct Family
-    {
-        const char* name;
-        double lowK;
-        Spectrum (*light)(double);
-    };
-    const Family families[] = {
-        {"planckian", kLowestCctK, [](double k) { return Planckian(k); }},
-        {"daylight", kDaylightFromK, [](double k) { return Daylight(k); }},
-    };
     AsShotEstimate best;
     best.residual = std::numeric_limits<double>::infinity();
-    for (const Family& f : families)
+    const LightFamily* matched = nullptr;
+    for (const LightFamily& f : kLightFamilies)
     {
-        // Mismatch of the response at `mired` (1e6 / K).
-        const auto mismatch = [&](double mired)
-        {
-            const Vec3 r = Response(camera, f.light(std::clamp(1e6 / mired, f.lowK, kHighestCctK)));
-            if (!(r.minCoeff() > 0.0))
-            {
-                return std::numeric_limits<double>::infinity();
-            }
-            return (LogChromaticity(r) - target).norm();
-        };
-        const double lo = 1e6 / kHighestCctK, hi = 1e6 / f.lowK;
-        constexpr double kStepMired = 0.5;
-        double at = lo, atValue = std::numeric_limits<double>::infinity();
-        for (double m = lo; m <= hi + 1e-9; m += kStepMired)
-        {
-            const double v = mismatch(std::min(m, hi));
-            if (v < atValue)
-            {
-                atValue = v;
-                at = std::min(m, hi);
-            }
-        }
-        // Golden section inside the grid step either side.
-        double a = std::max(lo, at - kStepMired), b = std::min(hi, at + kStepMired);
-        const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
-        double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
-        double f1 = mismatch(x1), f2 = mismatch(x2);
-        for (int i = 0; i < 80 && b - a > 1e-10; ++i)
-        {
-            if (f1 < f2)
-            {
-                b = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = b - phi * (b - a);
-                f1 = mismatch(x1);
-            }
-            else
-            {
-                a = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = a + phi * (b - a);
-                f2 = mismatch(x2);
-            }
-        }
-        const double mired = f1 < f2 ? x1 : x2;
-        const double value = std::min(f1, f2);
-        if (std::min(value, atValue) < best.residual)
+        const FamilyMatch m = MatchFamily(camera, target, f);
+        if (m.residual < best.residual)
         {
             best.family = f.name;
-            best.familyKelvin = 1e6 / (value <= atValue ? mired : at);
-            best.residual = std::min(value, atValue);
+            best.familyKelvin = m.kelvin;
+            best.residual = m.residual;
+            matched = &f;
         }
     }
-    if (!std::isfinite(best.residual))
+    if (!matched)
     {
         throw Exception(camera.label() +
                         ": no daylight or Planckian light gives a response in "
                         "every channel");
     }
     best.familyKelvin = std::clamp(best.familyKelvin, kLowestCctK, kHighestCctK);
-    best.light = best.family == std::string("daylight")
-                     ? Daylight(std::max(best.familyKelvin, kDaylightFromK))
-                     : Planckian(best.familyKelvin);
+    best.light = matched->light(std::max(best.familyKelvin, matched->lowK));
     // The white the neutral stands for: balanced by the matched light's
     // gains, through its IDT to balanced working RGB, and back to XYZ under
     // the light (the balance undone). An exact match gives the light's white.
@@ -461,19 +510,7 @@ AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
     const CctDuv cd = ComputeCct(xyz);
     best.cct = cd.cctK;
     best.duv = cd.duv;
-    const Eigen::Vector2d uv = XyzToUv1960(xyz);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const std::string& name : StandardIlluminantNames())
-    {
-        const double dist =
-            (XyzToUv1960(IntegrateXyz(BuiltinIlluminant(name), Observer::CIE1931_2DEG)) - uv)
-                .norm();
-        if (dist < nearest)
-        {
-            nearest = dist;
-            best.nearest = name;
-        }
-    }
+    best.nearest = NearestStandardIlluminant(XyzToUv1960(xyz));
     return best;
 }
 

@@ -1,28 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The jobs run in process, as a C++ host runs them, against what the command
-// writes for the same request: the two faces must agree byte for byte.
+// The apply job (jobs/ApplyJob) run in process, as a C++ host runs it:
+// the command's pixels for a change of light, OCIO's for a look of any
+// config.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
 
-#include "cli/RunCommand.h"
-#include "bandlight/jobs/AccuracyJob.h"
 #include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/ColourJobs.h"
-#include "bandlight/jobs/ConfigJob.h"
 #include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/LutJob.h"
+#include "bandlight/jobs/Inputs.h"
 #include "bandlight/spectral/Exception.h"
+#include "jobs/JobsTestSupport.h"
 
 using namespace bandlight;
-using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace
@@ -30,14 +27,6 @@ namespace
 /// The image module is found beside the bandlight executable; this test
 /// program lives elsewhere, so it says where.
 const bool g_moduleFound = ::setenv("BANDLIGHT_IMAGE_MODULE", BANDLIGHT_IMAGE_MODULE_FILE, 0) == 0;
-
-std::string ReadAll(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
 
 std::vector<float> ReadPixels(const std::string& path)
 {
@@ -48,130 +37,12 @@ std::vector<float> ReadPixels(const std::string& path)
     REQUIRE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
     return px;
 }
-
-std::string Fresh(const std::string& name)
-{
-    const std::string dir = test::TempPath("jobs_" + name);
-    fs::remove_all(dir);
-    return dir;
-}
 }  // namespace
-
-TEST_CASE("the config job with a default request writes the command's config.ocio", "[jobs]")
-{
-    const std::string lib = Fresh("config_lib"), cli = Fresh("config_cli");
-    jobs::ConfigRequest request;
-    request.out = lib;
-    const jobs::ConfigResult result = jobs::MakeConfig(request);
-    CHECK(result.options.lights.size() == 5);
-    CHECK(result.options.plates.balanced());
-    CHECK(result.options.lutSize == defaults::CONFIG_LUT_SIZE);
-    REQUIRE(test::Bandlight("config --out '" + cli + "'").code == 0);
-    const std::string written = ReadAll(lib + "/config.ocio");
-    REQUIRE(!written.empty());
-    CHECK(written == ReadAll(cli + "/config.ocio"));
-    // The returned config resolves its files from where it was written.
-    CHECK(std::string(result.package.config->getWorkingDir()) == lib);
-}
-
-TEST_CASE("a config needing LUT files is refused without a folder to write them into", "[jobs]")
-{
-    jobs::ConfigRequest request;
-    request.methods = {"rootpoly"};
-    request.lights = {jobs::ResolveIlluminant("A"), jobs::ResolveIlluminant("D65")};
-    request.lutSize = 5;
-    try
-    {
-        jobs::MakeConfig(request);
-        FAIL("accepted");
-    }
-    catch (const ParameterError& e)
-    {
-        CHECK_THAT(e.spelled(Face::PYTHON), Contains("give out=DIR"));
-    }
-    request.lutSize = 1;
-    CHECK_THROWS_AS(jobs::MakeConfig(request), ParameterError);
-}
-
-TEST_CASE("the lut job writes the command's file", "[jobs]")
-{
-    const std::string dir = Fresh("lut");
-    fs::create_directories(dir);
-    jobs::LutRequest request;
-    request.relight.src = jobs::ResolveIlluminant("F11");
-    request.relight.dst = jobs::ResolveIlluminant("D65");
-    request.relight.method = "rootpoly";
-    request.size = 9;
-    request.out = dir + "/lib.clf";
-    const jobs::LutResult result = jobs::MakeLut(request);
-    CHECK(result.files.lattice);
-    CHECK(result.size == 9);
-    REQUIRE(test::Bandlight("lut --from F11 --to D65 --method rootpoly --size 9 -o '" + dir +
-                            "/cli.clf'")
-                .code == 0);
-    CHECK(ReadAll(dir + "/lib.clf") == ReadAll(dir + "/cli.clf"));
-}
-
-TEST_CASE("the colour jobs' documents are the command's --json", "[jobs]")
-{
-    const test::Result xyz = test::Bandlight("xyz --illuminant F11 --reflectance TCS --json");
-    REQUIRE(xyz.code == 0);
-    jobs::XyzRequest request;
-    request.illuminant = jobs::ResolveIlluminant("F11");
-    request.reflectances = jobs::ResolveReflectances("TCS");
-    CHECK(jobs::XyzDocument(jobs::MakeXyz(request)) + "\n" == xyz.out);
-
-    const test::Result cri = test::Bandlight("cri --illuminant F2 --json");
-    REQUIRE(cri.code == 0);
-    const jobs::CriResult f2 = jobs::MakeCri(jobs::ResolveIlluminant("F2"));
-    CHECK(jobs::CriDocument(f2) + "\n" == cri.out);
-    // CIE 13.3-1995 Table 3 (via CIE 15:2004): F2 has Ra 64.
-    CHECK(f2.rendering.ra == Approx(64.0).margin(0.5));
-
-    const test::Result tables = test::Bandlight("tables --json --rule exact");
-    REQUIRE(tables.code == 0);
-    jobs::TablesRequest t;
-    t.rule = "exact";
-    CHECK(jobs::TablesDocument(jobs::MakeTables(t)) + "\n" == tables.out);
-}
-
-TEST_CASE("the accuracy job's document is the command's, row for row", "[jobs]")
-{
-    jobs::AccuracyRequest request;
-    request.lights = {jobs::ResolveIlluminant("A"), jobs::ResolveIlluminant("D65")};
-    request.methods = {"bradford", "band3"};
-    request.idealOnly = true;
-    request.cost = false;
-    const jobs::AccuracyResult result = jobs::MeasureAccuracyJob(request);
-    const test::Result cli = test::Bandlight(
-        "accuracy --illuminants A,D65 --methods bradford,band3 --ideal-only --no-cost --json -");
-    REQUIRE(cli.code == 0);
-    CHECK(jobs::AccuracyDocument(result) + "\n" == cli.out);
-    // The reference's own row is always there, and bradford beats band3
-    // (docs/accuracy.md).
-    const nlohmann::json doc = nlohmann::json::parse(cli.out);
-    double bradford = 0, band3 = 0;
-    bool spectral = false;
-    for (const auto& r : doc["rows"])
-    {
-        spectral = spectral || r["method"] == "spectral";
-        if (r["set"] == "tcs09-15" && r["exposure"] == 1.0 && r["plates"] == "lit")
-        {
-            (r["method"] == "bradford" ? bradford : band3) += r["mean"].get<double>();
-        }
-    }
-    CHECK(spectral);
-    CHECK(band3 > bradford);
-    // The text report is the command's table.
-    const test::Result text = test::Bandlight(
-        "accuracy --illuminants A,D65 --methods bradford,band3 --ideal-only --no-cost");
-    CHECK(jobs::AccuracyReport(result) == text.out);
-}
 
 TEST_CASE("the apply job writes the command's image, and names its parameters", "[jobs]")
 {
     REQUIRE(g_moduleFound);
-    const std::string dir = Fresh("apply");
+    const std::string dir = test::Fresh("apply");
     fs::create_directories(dir);
     std::vector<float> px(16 * 8 * 4);
     for (size_t i = 0; i < px.size(); ++i)
@@ -179,8 +50,7 @@ TEST_CASE("the apply job writes the command's image, and names its parameters", 
         px[i] = (i % 4 == 3) ? 1.0f : 0.01f * float(i % 97);
     }
     WriteImage(dir + "/plate.exr", px.data(), 16, 8, 4, {"R", "G", "B", "A"},
-                     LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"),
-                     PixelType::FLOAT);
+               LinearImageDescription(FindRgbSpace("acescg"), "ACEScg"), PixelType::FLOAT);
     jobs::ApplyRequest request;
     request.input = dir + "/plate.exr";
     request.output = dir + "/lib.exr";
@@ -219,7 +89,7 @@ TEST_CASE("the apply job writes the command's image, and names its parameters", 
 TEST_CASE("apply --look runs a matrix look of any config natively, with OCIO's pixels", "[jobs]")
 {
     REQUIRE(g_moduleFound);
-    const std::string dir = Fresh("apply_look");
+    const std::string dir = test::Fresh("apply_look");
     fs::create_directories(dir);
     // A config that is not bandlight's: a look that clamps and grades by a
     // matrix with an offset, the same matrix without the clamp, and an
@@ -268,8 +138,8 @@ TEST_CASE("apply --look runs a matrix look of any config natively, with OCIO's p
     }
     px[0] = std::numeric_limits<float>::quiet_NaN();
     px[5] = std::numeric_limits<float>::infinity();
-    WriteImage(dir + "/plate.exr", px.data(), 64, 8, 4, {"R", "G", "B", "A"},
-                     ImageDescription{}, PixelType::FLOAT);
+    WriteImage(dir + "/plate.exr", px.data(), 64, 8, 4, {"R", "G", "B", "A"}, ImageDescription{},
+               PixelType::FLOAT);
     for (const std::string name : {"grade", "plain", "curve"})
     {
         jobs::ApplyRequest request;
