@@ -412,7 +412,8 @@ struct MatteSide
     }
 };
 
-ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
+/// The matte's options checked against each other, before any file is read.
+void CheckMatteRequest(const ApplyRequest& r)
 {
     const bool insideIsLook = !r.insideLook.empty();
     const bool outsideIsLook = !r.outsideLook.empty();
@@ -452,12 +453,94 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
     {
         throw ParameterError("{matte}: both sides are relit in one working space");
     }
+}
+
+/// A change of light beside a look: it is defined on linear light of known
+/// primaries, so it gets the looks' pixels through the config's
+/// scene_linear, whose primaries the config shows, and gives them back.
+void ConvertForLooks(const ApplyRequest& r, const OCIO::ConstConfigRcPtr& config,
+                     const RgbSpace* working, const RelightRequest& relight, MatteSide& s)
+{
+    const RgbSpace* sceneLinear = working;
+    std::string why;
+    if (!sceneLinear)
+    {
+        try
+        {
+            sceneLinear = IdentifySceneLinear(config).space;
+        }
+        catch (const Exception& e)
+        {
+            why = e.what();
+        }
+    }
+    if (!sceneLinear)
+    {
+        throw ParameterError("{matte}: the change of light " + relight.src.name + " to " +
+                             relight.dst.name + " works in linear " +
+                             SpaceLabel(relight.working()) +
+                             ", and it would get the looks' pixels through " + r.config +
+                             "'s scene_linear, whose primaries are unknown (" + why +
+                             "): give both sides as looks of the config");
+    }
+    const std::string space = LookSpace(r, config);
+    ImageEncoding linear;
+    linear.space = *sceneLinear;
+    if (!r.colorspace.empty())
+    {
+        s.into.push_back(
+            config->getProcessor(space.c_str(), OCIO::ROLE_SCENE_LINEAR)->getDefaultCPUProcessor());
+    }
+    if (const OCIO::ConstCPUProcessorRcPtr p = EncodingToLinear(linear, relight.working()))
+    {
+        s.into.push_back(p);
+    }
+    if (const OCIO::ConstCPUProcessorRcPtr p = LinearToEncoding(relight.working(), linear))
+    {
+        s.back.push_back(p);
+    }
+    if (!r.colorspace.empty())
+    {
+        s.back.push_back(
+            config->getProcessor(OCIO::ROLE_SCENE_LINEAR, space.c_str())->getDefaultCPUProcessor());
+    }
+}
+
+/// out = m·inside(pixel) + (1 − m)·outside(pixel), R, G, B only.
+BufferWork MixByMatte(const Matte& matte, const BufferWork& in, const BufferWork& out)
+{
+    return [&matte, in, out](float* px, long w, long h, int n, const int* rgb)
+    {
+        const std::vector<float>& m = matte.weights;
+        if (size_t(w) * size_t(h) != m.size())
+        {
+            throw Exception(matte.path + ": the matte is " + std::to_string(matte.image.width) +
+                            "x" + std::to_string(matte.image.height) + ", the image " +
+                            std::to_string(w) + "x" + std::to_string(h));
+        }
+        std::vector<float> lit(px, px + size_t(w) * size_t(h) * size_t(n));
+        in(lit.data(), w, h, n, rgb);
+        out(px, w, h, n, rgb);
+        for (size_t p = 0; p < m.size(); ++p)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                float& v = px[p * size_t(n) + size_t(rgb[c])];
+                v = m[p] * lit[p * size_t(n) + size_t(rgb[c])] + (1.0f - m[p]) * v;
+            }
+        }
+    };
+}
+
+ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
+{
+    CheckMatteRequest(r);
     // What the image is to the sides: to looks, as `apply --look` takes it;
     // to two changes of light, as plain `apply --from --to` does.
     ImageColourRequest colour;
     OCIO::ConstConfigRcPtr config;
     std::string unknown;
-    if (insideIsLook || outsideIsLook)
+    if (!r.insideLook.empty() || !r.outsideLook.empty())
     {
         config = LoadConfig(r.config);
         colour.working = LookWorkingSpace(r, config, unknown);
@@ -479,55 +562,9 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
             return s;
         }
         s.form = MakeRelightForm(*relight, reporter);
-        if (!config)
+        if (config)
         {
-            return s;
-        }
-        // A change of light is defined on linear light of known primaries:
-        // beside a look it gets the looks' pixels through the config's
-        // scene_linear, whose primaries the config shows.
-        const RgbSpace* sceneLinear = colour.working;
-        std::string why;
-        if (!sceneLinear)
-        {
-            try
-            {
-                sceneLinear = IdentifySceneLinear(config).space;
-            }
-            catch (const Exception& e)
-            {
-                why = e.what();
-            }
-        }
-        if (!sceneLinear)
-        {
-            throw ParameterError("{matte}: the change of light " + relight->src.name + " to " +
-                                 relight->dst.name + " works in linear " +
-                                 SpaceLabel(relight->working()) +
-                                 ", and it would get the looks' pixels through " + r.config +
-                                 "'s scene_linear, whose primaries are unknown (" + why +
-                                 "): give both sides as looks of the config");
-        }
-        const std::string space = LookSpace(r, config);
-        ImageEncoding linear;
-        linear.space = *sceneLinear;
-        if (!r.colorspace.empty())
-        {
-            s.into.push_back(config->getProcessor(space.c_str(), OCIO::ROLE_SCENE_LINEAR)
-                                 ->getDefaultCPUProcessor());
-        }
-        if (const OCIO::ConstCPUProcessorRcPtr p = EncodingToLinear(linear, relight->working()))
-        {
-            s.into.push_back(p);
-        }
-        if (const OCIO::ConstCPUProcessorRcPtr p = LinearToEncoding(relight->working(), linear))
-        {
-            s.back.push_back(p);
-        }
-        if (!r.colorspace.empty())
-        {
-            s.back.push_back(config->getProcessor(OCIO::ROLE_SCENE_LINEAR, space.c_str())
-                                 ->getDefaultCPUProcessor());
+            ConvertForLooks(r, config, colour.working, *relight, s);
         }
         return s;
     };
@@ -545,30 +582,7 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
         ThrowIfFailed(ImageFiles().read(first, header, false));
         CheckMatteFits(matte, first, header);
     }
-    const BufferWork in = inside.work(r.threads);
-    const BufferWork out = outside.work(r.threads);
-    const std::vector<float>& m = matte.weights;
-    // out = m·inside(pixel) + (1 − m)·outside(pixel), R, G, B only.
-    const BufferWork mixed = [&](float* px, long w, long h, int n, const int* rgb)
-    {
-        if (size_t(w) * size_t(h) != m.size())
-        {
-            throw Exception(matte.path + ": the matte is " + std::to_string(matte.image.width) +
-                            "x" + std::to_string(matte.image.height) + ", the image " +
-                            std::to_string(w) + "x" + std::to_string(h));
-        }
-        std::vector<float> lit(px, px + size_t(w) * size_t(h) * size_t(n));
-        in(lit.data(), w, h, n, rgb);
-        out(px, w, h, n, rgb);
-        for (size_t p = 0; p < m.size(); ++p)
-        {
-            for (int c = 0; c < 3; ++c)
-            {
-                float& v = px[p * size_t(n) + size_t(rgb[c])];
-                v = m[p] * lit[p * size_t(n) + size_t(rgb[c])] + (1.0f - m[p]) * v;
-            }
-        }
-    };
+    const BufferWork mixed = MixByMatte(matte, inside.work(r.threads), outside.work(r.threads));
     ApplyResult result;
     result.applied = "matte " + matte.path + ":" + matte.channel +
                      " (inside: " + inside.form.applied + ", outside: " + outside.form.applied +
