@@ -116,13 +116,11 @@ void AddSpectralCommand(CLI::App& app)
     cmd->add_option("--channel-wavelengths", s.channelWavelengthsFile,
                     "CSV of 'channel,wavelength_nm' rows, or of sensitivities (a wavelength "
                     "column, one column per channel: each at its centroid)");
-    cmd->add_option("--kind", s.kind, "What named channels hold: emissive or reflective")
-        ->check(CLI::IsMember({"emissive", "reflective"}, CLI::ignore_case))
+    cmd->add_option("--kind", s.kind, "What named channels hold: " + jobs::SpectralKindChoices())
+        ->check(CLI::IsMember(jobs::SpectralKindKeys(), CLI::ignore_case))
         ->capture_default_str();
-    cmd->add_option("--sampling", s.sampling,
-                    "auto (as the layout says), points (values at the wavelengths) or buckets "
-                    "(means over each channel's interval)")
-        ->check(CLI::IsMember({"auto", "points", "buckets"}, CLI::ignore_case))
+    cmd->add_option("--sampling", s.sampling, jobs::SpectralSamplingHelp())
+        ->check(CLI::IsMember(jobs::SpectralSamplingKeys(), CLI::ignore_case))
         ->capture_default_str();
     AddFrameSetOptions(*cmd, r.files.frames, r.files.skipExisting, r.files.keepGoing, r.threads);
     cmd->add_option("--light-group", o->lightGroups,

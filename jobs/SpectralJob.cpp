@@ -23,6 +23,62 @@
 namespace bandlight::jobs
 {
 
+namespace
+{
+/// "a, b or c".
+std::string ListChoices(const std::vector<std::string>& keys)
+{
+    std::string list;
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+        list += (i == 0 ? "" : i + 1 == keys.size() ? " or " : ", ") + keys[i];
+    }
+    return list;
+}
+}  // namespace
+
+std::vector<std::string> SpectralKindKeys()
+{
+    std::vector<std::string> keys;
+    for (const SpectralKindEntry& e : SpectralKinds())
+    {
+        keys.push_back(e.key);
+    }
+    return keys;
+}
+
+std::vector<std::string> SpectralSamplingKeys()
+{
+    std::vector<std::string> keys = {SAMPLING_AUTO};
+    for (const SpectralSamplingEntry& e : SpectralSamplings())
+    {
+        keys.push_back(e.key);
+    }
+    return keys;
+}
+
+std::string SpectralKindChoices()
+{
+    return ListChoices(SpectralKindKeys());
+}
+
+std::string SpectralSamplingChoices()
+{
+    return ListChoices(SpectralSamplingKeys());
+}
+
+std::string SpectralSamplingHelp()
+{
+    std::string help = std::string(SAMPLING_AUTO) + " (as the layout says)";
+    const auto& table = SpectralSamplings();
+    for (size_t i = 0; i < table.size(); ++i)
+    {
+        help += std::string(i + 1 == table.size() ? " or " : ", ") + table[i].key + " (" +
+                table[i].help + ")";
+    }
+    return help;
+}
+
 SpectralLayoutOptions SpectralOptions::layoutOptions() const
 {
     SpectralLayoutOptions o;
@@ -45,30 +101,26 @@ SpectralLayoutOptions SpectralOptions::layoutOptions() const
     };
     const std::string kindName = lower(kind);
     const std::string samplingName = lower(sampling);
-    if (kindName == "emissive")
+    const auto& kinds = SpectralKinds();
+    const auto k = std::find_if(kinds.begin(), kinds.end(),
+                                [&](const SpectralKindEntry& e) { return kindName == e.key; });
+    if (k == kinds.end())
     {
-        o.namedKind = SpectralKind::EMISSIVE;
+        throw ParameterError("{kind} must be " + SpectralKindChoices() + ", got '" +
+                             OneLine(kind, 40) + "'");
     }
-    else if (kindName == "reflective")
+    o.namedKind = k->kind;
+    const auto& samplings = SpectralSamplings();
+    const auto m =
+        std::find_if(samplings.begin(), samplings.end(),
+                     [&](const SpectralSamplingEntry& e) { return samplingName == e.key; });
+    if (m != samplings.end())
     {
-        o.namedKind = SpectralKind::REFLECTIVE;
+        o.sampling = m->sampling;
     }
-    else
+    else if (samplingName != SAMPLING_AUTO)
     {
-        throw ParameterError("{kind} must be emissive or reflective, got '" + OneLine(kind, 40) +
-                             "'");
-    }
-    if (samplingName == "points")
-    {
-        o.sampling = SpectralSampling::POINTS;
-    }
-    else if (samplingName == "buckets")
-    {
-        o.sampling = SpectralSampling::BUCKETS;
-    }
-    else if (samplingName != "auto")
-    {
-        throw ParameterError("{sampling} must be auto, points or buckets, got '" +
+        throw ParameterError("{sampling} must be " + SpectralSamplingChoices() + ", got '" +
                              OneLine(sampling, 40) + "'");
     }
     return o;
@@ -616,9 +668,8 @@ void WriteLightGroupFrame(SpectralRun& run, const std::string& in, const std::st
         list += (list.empty() ? "" : ",") + name;
     }
     d.attributes.push_back({LIGHT_GROUPS_ATTRIBUTE, list});
-    d.attributes.push_back(
-        {"bandlight:transform",
-         "spectral " + image.layout.describe() + ", light groups (" + g.applied + ")"});
+    d.attributes.push_back({"bandlight:transform", "spectral " + image.layout.describe() +
+                                                       ", light groups (" + g.applied + ")"});
     WriteImage(out, pixels.data(), image.width, image.height, int(n), names, d, PixelType::FLOAT);
 }
 
@@ -693,8 +744,8 @@ void WriteConvertedFrame(SpectralRun& run, const std::string& in, const std::str
         d = EncodeForDisplay(run, out, out3, image.width, image.height, outChannels);
         type = PixelType::UINT8;
     }
-    d.attributes.push_back({"bandlight:transform",
-                            "spectral " + image.layout.describe() + ", " + conversion.applied});
+    d.attributes.push_back(
+        {"bandlight:transform", "spectral " + image.layout.describe() + ", " + conversion.applied});
     WriteImage(out, out3, image.width, image.height, outChannels,
                alpha ? std::vector<std::string>{"R", "G", "B", "A"}
                      : std::vector<std::string>{"R", "G", "B"},

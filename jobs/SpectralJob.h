@@ -27,6 +27,19 @@ struct SpectralLightGroup
     Light to;
 };
 
+/// --sampling's value for "as the layout says" (SpectralSamplings() has the others).
+inline constexpr const char* SAMPLING_AUTO = "auto";
+
+/// The spectral kinds' and samplings' keys (auto first), from their tables
+/// (spectral/SpectralImage.h), for parsing, choice checks and help.
+std::vector<std::string> SpectralKindKeys();
+std::vector<std::string> SpectralSamplingKeys();
+/// "emissive or reflective"; "auto, points or buckets".
+std::string SpectralKindChoices();
+std::string SpectralSamplingChoices();
+/// --sampling's help: each key with what it means.
+std::string SpectralSamplingHelp();
+
 /// How spectral pixels become working-space RGB: the lights, the working
 /// space, the plate convention and the observer (docs/spectral.md).
 struct SpectralOptions

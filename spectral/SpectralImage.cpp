@@ -14,6 +14,24 @@
 
 namespace bandlight
 {
+
+const std::vector<SpectralKindEntry>& SpectralKinds()
+{
+    static const std::vector<SpectralKindEntry> table = {
+        {SpectralKind::EMISSIVE, "emissive"},
+        {SpectralKind::REFLECTIVE, "reflective"},
+    };
+    return table;
+}
+
+const std::vector<SpectralSamplingEntry>& SpectralSamplings()
+{
+    static const std::vector<SpectralSamplingEntry> table = {
+        {SpectralSampling::POINTS, "points", "values at the wavelengths"},
+        {SpectralSampling::BUCKETS, "buckets", "means over each channel's interval"},
+    };
+    return table;
+}
 namespace
 {
 

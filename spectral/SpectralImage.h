@@ -48,6 +48,28 @@ enum class SpectralSampling
     BUCKETS,
 };
 
+/// One row of the spectral-kind table: the kind and its name in options.
+struct SpectralKindEntry
+{
+    SpectralKind kind;
+    const char* key;  ///< "emissive"
+};
+
+/// Every spectral kind, in the order they are listed to users.
+const std::vector<SpectralKindEntry>& SpectralKinds();
+
+/// One row of the sampling table: the sampling, its name in options and
+/// what it means to a user (help texts).
+struct SpectralSamplingEntry
+{
+    SpectralSampling sampling;
+    const char* key;   ///< "buckets"
+    const char* help;  ///< "means over each channel's interval"
+};
+
+/// Every sampling, in the order they are listed to users.
+const std::vector<SpectralSamplingEntry>& SpectralSamplings();
+
 /// A spectral channel name, parsed.
 struct SpectralChannel
 {
