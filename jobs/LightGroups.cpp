@@ -18,16 +18,15 @@ namespace bandlight::jobs
 namespace
 {
 
-bool StartsWith(const std::string& s, const std::string& prefix)
-{
-    return s.size() >= prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
-}
+/// The R, G, B channel indices of each layer that has all three, by layer
+/// name ("" for plain R, G, B).
+using RgbLayerMap = std::map<std::string, std::array<int, 3>>;
 
 /// The layers of an image that hold R, G and B ("" for plain R, G, B), with
 /// their channel indices.
-std::map<std::string, std::array<int, 3>> RgbLayers(const std::vector<std::string>& names)
+RgbLayerMap RgbLayers(const std::vector<std::string>& names)
 {
-    std::map<std::string, std::array<int, 3>> layers;
+    RgbLayerMap layers;
     std::map<std::string, int> index;
     for (size_t i = 0; i < names.size(); ++i)
     {
@@ -59,13 +58,29 @@ std::map<std::string, std::array<int, 3>> RgbLayers(const std::vector<std::strin
     return layers;
 }
 
-/// The view layer of a Blender layer name ("ViewLayer.Combined_key" →
-/// "ViewLayer."), and the pass after it.
-void SplitViewLayer(const std::string& layer, std::string& view, std::string& pass)
+/// A layer name split at its last dot: "ViewLayer.Combined_key" → view
+/// "ViewLayer.", pass "Combined_key"; a name without a dot is all pass.
+struct LayerName
+{
+    std::string view;
+    std::string pass;
+};
+
+LayerName SplitViewLayer(const std::string& layer)
 {
     const size_t dot = layer.rfind('.');
-    view = dot == std::string::npos ? "" : layer.substr(0, dot + 1);
-    pass = dot == std::string::npos ? layer : layer.substr(dot + 1);
+    if (dot == std::string::npos)
+    {
+        return {"", layer};
+    }
+    return {layer.substr(0, dot + 1), layer.substr(dot + 1)};
+}
+
+/// What follows `prefix` in `s`, or "" when `s` does not start with it.
+std::string AfterPrefix(const std::string& s, const std::string& prefix)
+{
+    const bool starts = s.size() > prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
+    return starts ? s.substr(prefix.size()) : "";
 }
 
 std::string Quoted(const std::string& s)
@@ -73,20 +88,358 @@ std::string Quoted(const std::string& s)
     return "'" + OneLine(s, 80) + "'";
 }
 
+/// The group a layer holds in one naming, or "" when it holds none in that
+/// naming. `listed`: the groups bandlight's header lists.
+using GroupRecogniser = std::string (*)(const std::string& layer,
+                                        const std::set<std::string>& listed);
+
+/// Blender/Cycles: "<ViewLayer>.Combined_<group>" or "Combined_<group>".
+std::string BlenderGroup(const std::string& layer, const std::set<std::string>&)
+{
+    return AfterPrefix(SplitViewLayer(layer).pass, "Combined_");
+}
+
+/// Arnold: "RGBA_<group>", in no view layer.
+std::string ArnoldGroup(const std::string& layer, const std::set<std::string>&)
+{
+    const LayerName n = SplitViewLayer(layer);
+    return n.view.empty() ? AfterPrefix(n.pass, "RGBA_") : "";
+}
+
+/// bandlight's `render --light-groups`: "<group>", listed in the header.
+std::string BandlightGroup(const std::string& layer, const std::set<std::string>& listed)
+{
+    return listed.count(layer) ? layer : "";
+}
+
+/// One way of naming light groups. A layer holds the group of the first
+/// naming (in table order) that recognises it.
+struct NamingConvention
+{
+    LightGroupNaming naming;
+    const char* name;  ///< as reported: "Blender/Cycles"
+    /// How a file without groups is told what was looked for; nullptr for
+    /// a naming no layer shows.
+    const char* lookedFor;
+    GroupRecogniser group;  ///< nullptr: its groups are not found in layer names
+    /// Its groups belong to a view layer (the layer name up to its last
+    /// dot), and one file holds one view layer's.
+    bool viewLayers;
+    /// The layers its beauty is looked for in, in order, after the view
+    /// layer ("" for plain R, G, B); nullptr past the last. None: the
+    /// groups sit beside whatever beauty the file has (kAnyBeauty).
+    std::array<const char*, 2> beauty;
+};
+
+// clang-format off
+constexpr NamingConvention kNamings[] = {
+    {LightGroupNaming::BLENDER,   "Blender/Cycles", "Blender/Cycles '<ViewLayer>.Combined_<group>'",
+     BlenderGroup,   true,  {"Combined", nullptr}},
+    // Arnold's beauty is R, G, B, A; an "RGBA" layer when written as one.
+    {LightGroupNaming::ARNOLD,    "Arnold",         "Arnold 'RGBA_<group>'",
+     ArnoldGroup,    false, {"", "RGBA"}},
+    {LightGroupNaming::BANDLIGHT, "bandlight",      "bandlight's own layers",
+     BandlightGroup, false, {nullptr, nullptr}},
+    {LightGroupNaming::MAPPED,    "mapped",         nullptr,
+     nullptr,        false, {nullptr, nullptr}},
+};
+// clang-format on
+
+/// The beauty of groups whose naming has none of its own: bandlight's
+/// plain R, G, B, then Blender's and Arnold's layers.
+constexpr std::array<const char*, 3> kAnyBeauty = {"", "Combined", "RGBA"};
+
+/// The items of a comma-separated list as written, spaces and empty items
+/// included: "a, b" → "a", " b".
+std::vector<std::string> SplitAtCommas(const std::string& list)
+{
+    std::vector<std::string> items;
+    for (size_t at = 0; at <= list.size();)
+    {
+        const size_t comma = std::min(list.find(',', at), list.size());
+        items.push_back(list.substr(at, comma - at));
+        at = comma + 1;
+    }
+    return items;
+}
+
+/// The header's list of bandlight's groups as written ("" when it has none).
+std::string ListedAttribute(const std::map<std::string, std::string>& attributes)
+{
+    const auto a = attributes.find(LIGHT_GROUPS_ATTRIBUTE);
+    return a == attributes.end() ? "" : a->second;
+}
+
+/// The names a group list holds: its items without spaces, empty ones left out.
+std::set<std::string> ListedGroups(const std::string& list)
+{
+    std::set<std::string> listed;
+    for (std::string item : SplitAtCommas(list))
+    {
+        item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
+        if (!item.empty())
+        {
+            listed.insert(item);
+        }
+    }
+    return listed;
+}
+
+/// The groups the layer names show, in the order of `layers`, and the view
+/// layers of those named after one (all of them, mapped over or not).
+struct NamedGroups
+{
+    std::vector<LightGroupLayer> groups;
+    std::set<std::string> views;  ///< "ViewLayer.", or "" for none
+};
+
+NamedGroups RecogniseGroups(const RgbLayerMap& layers, const std::set<std::string>& listed)
+{
+    NamedGroups out;
+    for (const auto& [layer, rgb] : layers)
+    {
+        for (const NamingConvention& c : kNamings)
+        {
+            LightGroupLayer g;
+            g.name = c.group ? c.group(layer, listed) : "";
+            if (g.name.empty())
+            {
+                continue;
+            }
+            g.layer = layer;
+            g.naming = c.naming;
+            std::copy(rgb.begin(), rgb.end(), g.rgb);
+            if (c.viewLayers)
+            {
+                out.views.insert(SplitViewLayer(layer).view);
+            }
+            out.groups.push_back(g);
+            break;
+        }
+    }
+    return out;
+}
+
+/// A group the user maps to three channels "r,g,b".
+LightGroupLayer MappedChannels(const std::string& file, const std::string& name,
+                               const std::string& where,
+                               const std::vector<std::string>& channelNames)
+{
+    const std::vector<std::string> three = SplitAtCommas(where);
+    if (three.size() != 3)
+    {
+        throw Exception(file + ": light group " + Quoted(name) + " is mapped to " + Quoted(where) +
+                        ": give a layer prefix or three channels r,g,b");
+    }
+    LightGroupLayer g;
+    for (int c = 0; c < 3; ++c)
+    {
+        const auto at = std::find(channelNames.begin(), channelNames.end(), three[size_t(c)]);
+        if (at == channelNames.end())
+        {
+            throw Exception(file + ": light group " + Quoted(name) + ": channel " +
+                            Quoted(three[size_t(c)]) + " is not in the image");
+        }
+        g.rgb[c] = int(at - channelNames.begin());
+    }
+    return g;
+}
+
+/// A group the user maps to a layer prefix: LAYER.R, LAYER.G, LAYER.B.
+LightGroupLayer MappedLayer(const std::string& file, const std::string& name,
+                            const std::string& where, const RgbLayerMap& layers)
+{
+    const auto l = layers.find(where);
+    if (l == layers.end())
+    {
+        throw Exception(file + ": light group " + Quoted(name) + ": the image has no layer " +
+                        Quoted(where) + " (no channels " + where + ".R, " + where + ".G, " + where +
+                        ".B)");
+    }
+    LightGroupLayer g;
+    std::copy(l->second.begin(), l->second.end(), g.rgb);
+    return g;
+}
+
+/// A group the user maps: `where` is three channels when it has a comma,
+/// else a layer prefix.
+LightGroupLayer MappedGroup(const std::string& file, const std::string& name,
+                            const std::string& where, const std::vector<std::string>& channelNames,
+                            const RgbLayerMap& layers)
+{
+    LightGroupLayer g = where.find(',') != std::string::npos
+                            ? MappedChannels(file, name, where, channelNames)
+                            : MappedLayer(file, name, where, layers);
+    g.name = name;
+    g.layer = where;
+    g.naming = LightGroupNaming::MAPPED;
+    return g;
+}
+
+/// Puts bandlight's groups in the order its header lists them (the
+/// scene's), ahead of the others, which keep theirs. `list` is the header's
+/// list as written: a name written with spaces in it ranks with the others
+/// (bandlight writes none).
+void SortAsListed(std::vector<LightGroupLayer>& groups, const std::string& list)
+{
+    const std::vector<std::string> order = SplitAtCommas(list);
+    const auto rank = [&](const LightGroupLayer& g)
+    {
+        const auto i = std::find(order.begin(), order.end(), g.name);
+        return g.naming == LightGroupNaming::BANDLIGHT ? size_t(i - order.begin()) : order.size();
+    };
+    std::stable_sort(groups.begin(), groups.end(),
+                     [&](const LightGroupLayer& a, const LightGroupLayer& b)
+                     { return rank(a) < rank(b); });
+}
+
+/// Throws when no group was found, naming what was looked for.
+void RequireSomeGroup(const std::string& file, const std::vector<LightGroupLayer>& groups)
+{
+    if (!groups.empty())
+    {
+        return;
+    }
+    std::vector<std::string> namings;
+    for (const NamingConvention& c : kNamings)
+    {
+        if (c.lookedFor)
+        {
+            namings.push_back(c.lookedFor);
+        }
+    }
+    std::string list;
+    for (size_t i = 0; i < namings.size(); ++i)
+    {
+        list += (i == 0 ? "" : i + 1 == namings.size() ? " and " : ", ") + namings[i];
+    }
+    throw Exception(file + ": holds no light groups (looked for " + list +
+                    "; other namings are mapped to a group by their layer)");
+}
+
+/// Throws when the groups belong to more than one view layer.
+void RequireOneViewLayer(const std::string& file, const std::set<std::string>& views)
+{
+    if (views.size() <= 1)
+    {
+        return;
+    }
+    std::string list;
+    for (const std::string& v : views)
+    {
+        list += (list.empty() ? "" : ", ") +
+                (v.empty() ? std::string("(none)") : v.substr(0, v.size() - 1));
+    }
+    throw Exception(file + ": holds light groups of several view layers (" + list +
+                    "); relight one view layer's file at a time");
+}
+
+/// Throws when two groups have one name, or share a channel.
+void RequireDistinctGroups(const std::string& file, const std::vector<LightGroupLayer>& groups,
+                           const std::vector<std::string>& channelNames)
+{
+    for (size_t i = 0; i < groups.size(); ++i)
+    {
+        for (size_t j = 0; j < i; ++j)
+        {
+            const LightGroupLayer& a = groups[j];
+            const LightGroupLayer& b = groups[i];
+            if (a.name == b.name)
+            {
+                throw Exception(file + ": light group " + Quoted(a.name) + " is named twice (" +
+                                Quoted(a.layer) + " and " + Quoted(b.layer) + ")");
+            }
+            for (int c = 0; c < 3; ++c)
+            {
+                if (std::find(b.rgb, b.rgb + 3, a.rgb[c]) != b.rgb + 3)
+                {
+                    throw Exception(file + ": light groups " + Quoted(a.name) + " and " +
+                                    Quoted(b.name) + " resolve to the same channel " +
+                                    Quoted(channelNames[size_t(a.rgb[c])]));
+                }
+            }
+        }
+    }
+}
+
+/// The layers the groups' beauty may be, in the order looked for: those of
+/// each naming present that has a beauty of its own (in table order, after
+/// the view layer), else kAnyBeauty.
+std::vector<std::string> BeautyCandidates(const std::vector<LightGroupLayer>& groups,
+                                          const std::set<std::string>& views)
+{
+    const std::string view = views.empty() ? "" : *views.begin();
+    std::vector<std::string> candidates;
+    for (const NamingConvention& c : kNamings)
+    {
+        const bool present = std::any_of(groups.begin(), groups.end(),
+                                         [&](const auto& g) { return g.naming == c.naming; });
+        for (const char* layer : c.beauty)
+        {
+            if (present && layer)
+            {
+                candidates.push_back((c.viewLayers ? view : "") + layer);
+            }
+        }
+    }
+    if (candidates.empty())
+    {
+        candidates.assign(kAnyBeauty.begin(), kAnyBeauty.end());
+    }
+    return candidates;
+}
+
+/// Sets the layout's beauty to the first of `candidates` the image has;
+/// throws naming them all when it has none.
+void FindBeauty(const std::string& file, const RgbLayerMap& layers,
+                const std::vector<std::string>& candidates, LightGroupLayout& out)
+{
+    for (const std::string& c : candidates)
+    {
+        if (const auto l = layers.find(c); l != layers.end())
+        {
+            out.beautyLayer = c;
+            std::copy(l->second.begin(), l->second.end(), out.beauty);
+            return;
+        }
+    }
+    std::string list;
+    for (const std::string& c : candidates)
+    {
+        list += (list.empty() ? "" : ", ") + (c.empty() ? std::string("R, G, B") : c + ".R/G/B");
+    }
+    throw Exception(file + ": has light groups but no beauty they sum to (looked for " + list +
+                    ")");
+}
+
+/// Throws when a group resolves to one of the beauty's channels.
+void RequireGroupsApartFromBeauty(const std::string& file, const LightGroupLayout& layout,
+                                  const std::vector<std::string>& channelNames)
+{
+    for (const LightGroupLayer& g : layout.groups)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            if (std::find(layout.beauty, layout.beauty + 3, g.rgb[c]) != layout.beauty + 3)
+            {
+                throw Exception(file + ": light group " + Quoted(g.name) +
+                                " resolves to the beauty's own channel " +
+                                Quoted(channelNames[size_t(g.rgb[c])]));
+            }
+        }
+    }
+}
+
 }  // namespace
 
 const char* LightGroupNamingName(LightGroupNaming naming)
 {
-    switch (naming)
+    for (const NamingConvention& c : kNamings)
     {
-        case LightGroupNaming::BLENDER:
-            return "Blender/Cycles";
-        case LightGroupNaming::ARNOLD:
-            return "Arnold";
-        case LightGroupNaming::BANDLIGHT:
-            return "bandlight";
-        case LightGroupNaming::MAPPED:
-            return "mapped";
+        if (c.naming == naming)
+        {
+            return c.name;
+        }
     }
     return "";
 }
@@ -127,223 +480,28 @@ LightGroupLayout FindLightGroups(const std::string& file,
                                  const std::map<std::string, std::string>& attributes,
                                  const std::map<std::string, std::string>& mapped)
 {
-    const std::map<std::string, std::array<int, 3>> layers = RgbLayers(channelNames);
+    const RgbLayerMap layers = RgbLayers(channelNames);
+    const std::string listed = ListedAttribute(attributes);
+    const NamedGroups named = RecogniseGroups(layers, ListedGroups(listed));
     LightGroupLayout out;
-    // bandlight's own groups, as its header lists them.
-    std::set<std::string> listed;
-    if (const auto a = attributes.find(LIGHT_GROUPS_ATTRIBUTE); a != attributes.end())
+    // A group the user maps replaces the one of that name the layers show.
+    for (const LightGroupLayer& g : named.groups)
     {
-        std::string item;
-        for (size_t i = 0; i <= a->second.size(); ++i)
-        {
-            if (i == a->second.size() || a->second[i] == ',')
-            {
-                if (!item.empty())
-                {
-                    listed.insert(item);
-                }
-                item.clear();
-            }
-            else if (a->second[i] != ' ')
-            {
-                item += a->second[i];
-            }
-        }
-    }
-    std::set<std::string> views;  // Blender view layers holding groups
-    for (const auto& [layer, rgb] : layers)
-    {
-        std::string view, pass;
-        SplitViewLayer(layer, view, pass);
-        LightGroupLayer g;
-        g.layer = layer;
-        std::copy(rgb.begin(), rgb.end(), g.rgb);
-        if (StartsWith(pass, "Combined_") && pass.size() > 9)
-        {
-            g.name = pass.substr(9);
-            g.naming = LightGroupNaming::BLENDER;
-            views.insert(view);
-        }
-        else if (view.empty() && StartsWith(pass, "RGBA_") && pass.size() > 5)
-        {
-            g.name = pass.substr(5);
-            g.naming = LightGroupNaming::ARNOLD;
-        }
-        else if (listed.count(layer))
-        {
-            g.name = layer;
-            g.naming = LightGroupNaming::BANDLIGHT;
-        }
-        else
-        {
-            continue;
-        }
         if (!mapped.count(g.name))
         {
             out.groups.push_back(g);
         }
     }
-    // Groups the user maps: a layer prefix, or three channels.
     for (const auto& [name, where] : mapped)
     {
-        LightGroupLayer g;
-        g.name = name;
-        g.layer = where;
-        g.naming = LightGroupNaming::MAPPED;
-        const size_t c1 = where.find(',');
-        if (c1 != std::string::npos)
-        {
-            const size_t c2 = where.find(',', c1 + 1);
-            const std::vector<std::string> three = {
-                where.substr(0, c1),
-                c2 == std::string::npos ? "" : where.substr(c1 + 1, c2 - c1 - 1),
-                c2 == std::string::npos ? "" : where.substr(c2 + 1)};
-            if (c2 == std::string::npos || three[2].find(',') != std::string::npos)
-            {
-                throw Exception(file + ": light group " + Quoted(name) + " is mapped to " +
-                                Quoted(where) + ": give a layer prefix or three channels r,g,b");
-            }
-            for (int c = 0; c < 3; ++c)
-            {
-                const auto at =
-                    std::find(channelNames.begin(), channelNames.end(), three[size_t(c)]);
-                if (at == channelNames.end())
-                {
-                    throw Exception(file + ": light group " + Quoted(name) + ": channel " +
-                                    Quoted(three[size_t(c)]) + " is not in the image");
-                }
-                g.rgb[c] = int(at - channelNames.begin());
-            }
-        }
-        else
-        {
-            const auto l = layers.find(where);
-            if (l == layers.end())
-            {
-                throw Exception(file + ": light group " + Quoted(name) +
-                                ": the image has no layer " + Quoted(where) + " (no channels " +
-                                where + ".R, " + where + ".G, " + where + ".B)");
-            }
-            std::copy(l->second.begin(), l->second.end(), g.rgb);
-        }
-        out.groups.push_back(g);
+        out.groups.push_back(MappedGroup(file, name, where, channelNames, layers));
     }
-    // bandlight's groups in the order its header lists them (the scene's).
-    std::vector<std::string> order;
-    if (const auto a = attributes.find(LIGHT_GROUPS_ATTRIBUTE); a != attributes.end())
-    {
-        for (size_t at = 0; at <= a->second.size();)
-        {
-            const size_t comma = std::min(a->second.find(',', at), a->second.size());
-            order.push_back(a->second.substr(at, comma - at));
-            at = comma + 1;
-        }
-    }
-    const auto rank = [&](const LightGroupLayer& g)
-    {
-        const auto i = std::find(order.begin(), order.end(), g.name);
-        return g.naming == LightGroupNaming::BANDLIGHT ? size_t(i - order.begin()) : order.size();
-    };
-    std::stable_sort(out.groups.begin(), out.groups.end(),
-                     [&](const LightGroupLayer& a, const LightGroupLayer& b)
-                     { return rank(a) < rank(b); });
-    if (out.groups.empty())
-    {
-        throw Exception(file +
-                        ": holds no light groups (looked for Blender/Cycles "
-                        "'<ViewLayer>.Combined_<group>', Arnold 'RGBA_<group>' and bandlight's "
-                        "own layers; other namings are mapped to a group by their layer)");
-    }
-    if (views.size() > 1)
-    {
-        std::string list;
-        for (const std::string& v : views)
-        {
-            list += (list.empty() ? "" : ", ") +
-                    (v.empty() ? std::string("(none)") : v.substr(0, v.size() - 1));
-        }
-        throw Exception(file + ": holds light groups of several view layers (" + list +
-                        "); relight one view layer's file at a time");
-    }
-    // Two groups on the same channels, or one name twice.
-    for (size_t i = 0; i < out.groups.size(); ++i)
-    {
-        for (size_t j = 0; j < i; ++j)
-        {
-            const LightGroupLayer& a = out.groups[j];
-            const LightGroupLayer& b = out.groups[i];
-            if (a.name == b.name)
-            {
-                throw Exception(file + ": light group " + Quoted(a.name) + " is named twice (" +
-                                Quoted(a.layer) + " and " + Quoted(b.layer) + ")");
-            }
-            for (int c = 0; c < 3; ++c)
-            {
-                for (int d = 0; d < 3; ++d)
-                {
-                    if (a.rgb[c] == b.rgb[d])
-                    {
-                        throw Exception(file + ": light groups " + Quoted(a.name) + " and " +
-                                        Quoted(b.name) + " resolve to the same channel " +
-                                        Quoted(channelNames[size_t(a.rgb[c])]));
-                    }
-                }
-            }
-        }
-    }
-    // The beauty: the view layer's Combined, Arnold's RGBA, or R, G, B.
-    std::vector<std::string> candidates;
-    const bool blender =
-        std::any_of(out.groups.begin(), out.groups.end(),
-                    [](const auto& g) { return g.naming == LightGroupNaming::BLENDER; });
-    const bool arnold =
-        std::any_of(out.groups.begin(), out.groups.end(),
-                    [](const auto& g) { return g.naming == LightGroupNaming::ARNOLD; });
-    if (blender)
-    {
-        candidates.push_back(*views.begin() + "Combined");
-    }
-    if (arnold)
-    {
-        candidates.push_back("");  // Arnold's beauty: R, G, B, A
-        candidates.push_back("RGBA");
-    }
-    if (!blender && !arnold)
-    {
-        candidates = {"", "Combined", "RGBA"};
-    }
-    for (const std::string& c : candidates)
-    {
-        if (const auto l = layers.find(c); l != layers.end())
-        {
-            out.beautyLayer = c;
-            std::copy(l->second.begin(), l->second.end(), out.beauty);
-            break;
-        }
-    }
-    if (out.beauty[0] < 0)
-    {
-        std::string list;
-        for (const std::string& c : candidates)
-        {
-            list +=
-                (list.empty() ? "" : ", ") + (c.empty() ? std::string("R, G, B") : c + ".R/G/B");
-        }
-        throw Exception(file + ": has light groups but no beauty they sum to (looked for " + list +
-                        ")");
-    }
-    for (const LightGroupLayer& g : out.groups)
-    {
-        for (int c = 0; c < 3; ++c)
-        {
-            if (std::find(out.beauty, out.beauty + 3, g.rgb[c]) != out.beauty + 3)
-            {
-                throw Exception(file + ": light group " + Quoted(g.name) +
-                                " resolves to the beauty's own channel " +
-                                Quoted(channelNames[size_t(g.rgb[c])]));
-            }
-        }
-    }
+    SortAsListed(out.groups, listed);
+    RequireSomeGroup(file, out.groups);
+    RequireOneViewLayer(file, named.views);
+    RequireDistinctGroups(file, out.groups, channelNames);
+    FindBeauty(file, layers, BeautyCandidates(out.groups, named.views), out);
+    RequireGroupsApartFromBeauty(file, out, channelNames);
     return out;
 }
 

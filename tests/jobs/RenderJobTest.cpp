@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The render job in process: its comparison against the spectral render,
-// its outputs as one set, its checks before the work, and the command's bytes.
+// its outputs as one set, its checks before the work, the command's bytes,
+// and light groups whose sum is the beauty.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -12,11 +13,13 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
+#include "bandlight/jobs/LightGroups.h"
 #include "bandlight/jobs/RenderJob.h"
 #include "bandlight/spectral/Colorimetry.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/RgbSpaces.h"
 #include "cli/RunCommand.h"
+#include "jobs/LightGroupsTestSupport.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;
@@ -306,4 +309,55 @@ TEST_CASE("the command prints the plan, then refuses outputs that do not go toge
           "bandlight: --spectra needs spectral mode (--mode spectral): band mode has no spectrum "
           "to write\n");
     CHECK_FALSE(fs::exists(dir + "/x.exr"));
+}
+
+TEST_CASE("render --light-groups in band and N-band mode: beauty = Σ groups in the file",
+          "[jobs][lightgroups][render]")
+{
+    const std::string dir = test::FreshLightGroupDir("bandrender");
+    for (const std::string mode : {"band3", "band6"})
+    {
+        INFO(mode);
+        jobs::RenderRequest r;
+        r.scene = std::string(SCENES_DIR) + "/two_lights.yaml";
+        r.mode = mode;
+        r.lightGroups = true;
+        r.preview = false;
+        r.out = dir + "/" + mode + ".exr";
+        const jobs::RenderResult result = jobs::MakeRender(r);
+        const test::Exr::Part file = test::ReadExr(r.out)[0];
+        CHECK(file.spec.get_string_attribute(jobs::LIGHT_GROUPS_ATTRIBUTE) == "key,fill");
+        CHECK(file.spec.nchannels == 9);
+        // The beauty is what a render without groups gives, to float rounding.
+        jobs::RenderRequest plain = r;
+        plain.lightGroups = false;
+        plain.out.clear();
+        const std::vector<float> whole = jobs::MakeRender(plain).image.pixels;
+        const double peak = test::MaxAbs(whole);
+        REQUIRE(peak > 0.0);
+        double worstSum = 0.0, worstWhole = 0.0;
+        for (size_t p = 0; p < file.count(); ++p)
+        {
+            for (int c = 0; c < 3; ++c)
+            {
+                const std::string ch(1, "RGB"[c]);
+                worstSum =
+                    std::max(worstSum, std::abs(double(file.at(p, ch)) - file.at(p, "key." + ch) -
+                                                file.at(p, "fill." + ch)));
+                worstWhole = std::max(worstWhole,
+                                      std::abs(double(file.at(p, ch)) - whole[3 * p + size_t(c)]));
+                CHECK(result.image.pixels[3 * p + size_t(c)] == file.at(p, ch));
+            }
+        }
+        CHECK(worstSum <= 1e-6 * peak);
+        CHECK(worstWhole <= 1e-5 * peak);
+        // Each group lights only its part: the key's light is warm (A).
+        double keyR = 0.0, keyB = 0.0;
+        for (size_t p = 0; p < file.count(); ++p)
+        {
+            keyR += file.at(p, "key.R");
+            keyB += file.at(p, "key.B");
+        }
+        CHECK(keyR > 1.5 * keyB);
+    }
 }
