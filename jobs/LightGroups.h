@@ -68,8 +68,10 @@ struct LightGroupLayout
 /// mapped groups are added to (or replace) those the naming shows. Throws
 /// Exception with one line naming `file` when no group is found, when a
 /// mapped layer is not in the image, when two groups resolve to the same
-/// channels, when groups of different view layers or namings mix, and when
-/// no beauty is found.
+/// channels, when groups of different view layers mix, and when no beauty
+/// is found. Groups of different namings (a Blender pass beside an Arnold
+/// AOV) may stand together: each is found by its own naming, and the
+/// report names the namings.
 LightGroupLayout FindLightGroups(const std::string& file,
                                  const std::vector<std::string>& channelNames,
                                  const std::map<std::string, std::string>& attributes,
