@@ -6,6 +6,7 @@
 
 #include "bandlight/spectral/CieData.h"
 #include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/GoldenSection.h"
 #include "bandlight/spectral/Illuminants.h"
 
 namespace bandlight
@@ -68,29 +69,8 @@ CctDuv ComputeCct(const Vec3& xyz)
     double lo = std::max(mired0, mired0 + double(best) - 1.0);
     double hi = std::min(1e6 / kMinKelvin, mired0 + double(best) + 1.0);
     auto dist2 = [&](double mired) { return (PlanckianUv(1e6 / mired) - uv).squaredNorm(); };
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-    double fa = dist2(a), fb = dist2(b);
-    while (hi - lo > 1e-7)
-    {
-        if (fa < fb)
-        {
-            hi = b;
-            b = a;
-            fb = fa;
-            a = hi - g * (hi - lo);
-            fa = dist2(a);
-        }
-        else
-        {
-            lo = a;
-            a = b;
-            fa = fb;
-            b = lo + g * (hi - lo);
-            fb = dist2(b);
-        }
-    }
-    const double mired = 0.5 * (lo + hi);
+    const GoldenSectionResult r = GoldenSectionMinimum(dist2, lo, hi, 1e-7);
+    const double mired = 0.5 * (r.lo + r.hi);
     const Eigen::Vector2d p = PlanckianUv(1e6 / mired);
     const double d = (uv - p).norm();
     return {1e6 / mired, uv.y() >= p.y() ? d : -d};

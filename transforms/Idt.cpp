@@ -10,6 +10,7 @@
 
 #include "bandlight/spectral/ColourRendering.h"
 #include "bandlight/spectral/Exception.h"
+#include "bandlight/spectral/GoldenSection.h"
 #include "bandlight/spectral/Illuminants.h"
 #include "bandlight/transforms/Accuracy.h"
 #include "bandlight/transforms/Plates.h"
@@ -413,31 +414,10 @@ FamilyMatch MatchFamily(const SpectralCamera& camera, const Eigen::Vector2d& tar
         }
     }
     // Golden section inside the grid step either side.
-    double a = std::max(lo, at - kStepMired), b = std::min(hi, at + kStepMired);
-    const double phi = (std::sqrt(5.0) - 1.0) / 2.0;
-    double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
-    double f1 = mismatch(x1), f2 = mismatch(x2);
-    for (int i = 0; i < 80 && b - a > 1e-10; ++i)
-    {
-        if (f1 < f2)
-        {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - phi * (b - a);
-            f1 = mismatch(x1);
-        }
-        else
-        {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + phi * (b - a);
-            f2 = mismatch(x2);
-        }
-    }
-    const double mired = f1 < f2 ? x1 : x2;
-    const double value = std::min(f1, f2);
+    const double a = std::max(lo, at - kStepMired), b = std::min(hi, at + kStepMired);
+    const GoldenSectionResult r = GoldenSectionMinimum(mismatch, a, b, 1e-10, 80);
+    const double mired = r.x;
+    const double value = r.value;
     return {1e6 / (value <= atValue ? mired : at), std::min(value, atValue)};
 }
 
