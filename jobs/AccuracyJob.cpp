@@ -523,7 +523,7 @@ void WriteHeatmaps(const AccuracyRequest& r, Reporter& reporter, OutputSet& outp
 {
     SpectralOptions imageOptions = ImageOptions(r);
     imageOptions.plates = r.plates;
-    if (imageOptions.plates.plates == "both")
+    if (imageOptions.plates.both())
     {
         imageOptions.plates.plates = defaults::PLATES;
     }

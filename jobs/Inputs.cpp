@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "bandlight/jobs/Defaults.h"
 #include "bandlight/plugin/ConfigReferences.h"
 #include "bandlight/spectral/Exception.h"
 #include "bandlight/spectral/Illuminants.h"
@@ -222,13 +223,24 @@ Plates PlatesRequest::parsed() const
     return ParsePlates(plates, adaptation);
 }
 
+bool PlatesRequest::both() const
+{
+    return plates == defaults::ACCURACY_PLATES;
+}
+
 std::vector<Plates> PlatesRequest::all() const
 {
-    if (plates == "both")
+    if (!both())
     {
-        return {ParsePlates("balanced", adaptation), ParsePlates("lit", adaptation)};
+        return {parsed()};
     }
-    return {parsed()};
+    // Balanced first, as reports list them, then lit, with one adaptation
+    // (parsed, so a wrong one is refused as for one convention).
+    Plates balanced = ParsePlates(defaults::PLATES, adaptation);
+    balanced.convention = PlateConvention::BALANCED;
+    Plates lit = balanced;
+    lit.convention = PlateConvention::LIT;
+    return {balanced, lit};
 }
 
 std::shared_ptr<const SpectralCamera> PlatesRequest::loadCamera() const

@@ -73,6 +73,8 @@ struct PlatesRequest
     Plates parsed() const;
     /// The conventions: both for "both", else the one named.
     std::vector<Plates> all() const;
+    /// Plates "both" (ACCURACY_PLATES): every convention of the table.
+    bool both() const;
     /// The camera file read (nullptr without camera); read on each call.
     std::shared_ptr<const SpectralCamera> loadCamera() const;
     /// The IDT light resolved.
