@@ -9,16 +9,16 @@
 
 #include <benchmark/benchmark.h>
 
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/spectral/SpectralImage.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/PixelKernels.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "jobs/ImageApply.h"
+#include "jobs/SpectralJob.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
+#include "spectral/SpectralImage.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/PixelKernels.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 

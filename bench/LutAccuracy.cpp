@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 

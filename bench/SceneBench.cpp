@@ -4,8 +4,8 @@
 //   build/bench/bench_scene
 #include <benchmark/benchmark.h>
 
-#include "bandlight/render/SceneRenderer.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "render/SceneRenderer.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 

@@ -3,11 +3,11 @@
 //   build/bench/bench_spectral --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/BandModel.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
 
 using namespace bandlight;
 

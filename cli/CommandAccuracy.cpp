@@ -5,10 +5,10 @@
 #include <iostream>
 #include <memory>
 
-#include "bandlight/jobs/AccuracyJob.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/LightGroupAccuracy.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/AccuracyJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/LightGroupAccuracy.h"
+#include "spectral/RgbSpaces.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/spectral/TextFile.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/Inputs.h"
+#include "spectral/Parallel.h"
+#include "spectral/TextFile.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"

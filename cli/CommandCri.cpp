@@ -5,7 +5,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "bandlight/jobs/ColourJobs.h"
+#include "jobs/ColourJobs.h"
 
 namespace bandlight::cli
 {

@@ -6,8 +6,8 @@
 #include <iostream>
 #include <memory>
 
-#include "bandlight/jobs/IdtJob.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/IdtJob.h"
+#include "spectral/RgbSpaces.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 

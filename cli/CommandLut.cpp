@@ -6,9 +6,9 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "bandlight/jobs/LutJob.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/LutJob.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli
 {

@@ -7,7 +7,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Common.h"
-#include "bandlight/jobs/PlotJob.h"
+#include "jobs/PlotJob.h"
 
 namespace bandlight::cli
 {

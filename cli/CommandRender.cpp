@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "bandlight/jobs/RenderJob.h"
-#include "bandlight/spectral/Parallel.h"
+#include "jobs/RenderJob.h"
+#include "spectral/Parallel.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 

@@ -4,10 +4,10 @@
 #include <iostream>
 #include <memory>
 
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/Defaults.h"
+#include "jobs/SpectralJob.h"
+#include "spectral/Parallel.h"
+#include "spectral/RgbSpaces.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"

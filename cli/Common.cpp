@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/Common.h"
-#include "bandlight/spectral/Parallel.h"
+#include "spectral/Parallel.h"
 
 #include <algorithm>
 #include <iostream>
 #include <vector>
 
 #include "cli/Diagnostics.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/transforms/Plates.h"
+#include "jobs/Defaults.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/Plates.h"
 
 namespace bandlight::cli
 {

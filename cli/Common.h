@@ -9,9 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/Frames.h"
+#include "jobs/Inputs.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::cli
 {

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::cli
 {

@@ -11,9 +11,9 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "cli/Diagnostics.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/transforms/Defaults.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+#include "transforms/Defaults.h"
 
 namespace
 {

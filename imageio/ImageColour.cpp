@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/imageio/ImageColour.h"
+#include "imageio/ImageColour.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Exception.h"
+#include "plugin/ConfigBuilder.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

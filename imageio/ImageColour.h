@@ -12,8 +12,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/imageio/ImageFiles.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "imageio/ImageFiles.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight
 {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The image module's loader, and what the library writes through it.
-#include "bandlight/imageio/ImageFiles.h"
+#include "imageio/ImageFiles.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
 
 #include <cstdlib>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight
 {

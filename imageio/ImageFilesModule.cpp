@@ -12,10 +12,10 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "bandlight/imageio/ImageFiles.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/TextFile.h"
+#include "imageio/ImageFiles.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {

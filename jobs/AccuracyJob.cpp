@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The accuracy job: the measurement, its JSON document and its plot.
-#include "bandlight/jobs/AccuracyJob.h"
+#include "jobs/AccuracyJob.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,14 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/report/Gnuplot.h"
-#include "bandlight/report/detail/AccuracySummary.h"
-#include "bandlight/report/detail/PlotLabels.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/Frames.h"
+#include "jobs/OutputPaths.h"
+#include "plugin/OcioTransforms.h"
+#include "report/Gnuplot.h"
+#include "report/detail/AccuracySummary.h"
+#include "report/detail/PlotLabels.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Cost.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/jobs/SpectralAccuracy.h"
-#include "bandlight/transforms/Accuracy.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/Cost.h"
+#include "jobs/Inputs.h"
+#include "jobs/SpectralAccuracy.h"
+#include "transforms/Accuracy.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "bandlight/jobs/AccuracyJob.h"
-#include "bandlight/report/detail/AccuracySummary.h"
+#include "jobs/AccuracyJob.h"
+#include "report/detail/AccuracySummary.h"
 
 namespace bandlight::jobs
 {

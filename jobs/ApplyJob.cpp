@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/ApplyJob.h"
+#include "jobs/ApplyJob.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/plugin/NativeKernels.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/plugin/SceneLinearEvidence.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Parallel.h"
+#include "jobs/Frames.h"
+#include "jobs/ImageApply.h"
+#include "jobs/LightGroups.h"
+#include "plugin/NativeKernels.h"
+#include "plugin/OcioTransforms.h"
+#include "plugin/SceneLinearEvidence.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {

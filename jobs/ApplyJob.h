@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Inputs.h"
+#include "jobs/Frames.h"
+#include "jobs/Inputs.h"
 
 namespace bandlight::jobs
 {

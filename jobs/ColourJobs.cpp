@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/ColourJobs.h"
+#include "jobs/ColourJobs.h"
 
 #include <nlohmann/json.hpp>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 
 namespace bandlight::jobs
 {

@@ -10,10 +10,10 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/transforms/BandModel.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/Inputs.h"
+#include "spectral/ColourRendering.h"
+#include "transforms/BandModel.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/ConfigJob.h"
+#include "jobs/ConfigJob.h"
 
 #include <filesystem>
 
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/OutputPaths.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/Inputs.h"
+#include "plugin/ConfigBuilder.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

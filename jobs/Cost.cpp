@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/Cost.h"
+#include "jobs/Cost.h"
 
 #include <algorithm>
 #include <chrono>
 #include <random>
 #include <thread>
 
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Defaults.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "jobs/ImageApply.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Defaults.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight::jobs
 {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/transforms/IlluminantChange.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::jobs
 {

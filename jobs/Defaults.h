@@ -6,7 +6,7 @@
 // accuracy run compares, threads. Read by the jobs' requests, the command's
 // options and the Python module's keywords alike.
 
-#include "bandlight/transforms/Defaults.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight::defaults
 {

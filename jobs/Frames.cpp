@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/Frames.h"
+#include "jobs/Frames.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,8 +14,8 @@
 #include <thread>
 #include <unordered_set>
 
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/OutputPaths.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::jobs
 {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Reporter.h"
+#include "jobs/Reporter.h"
 
 namespace bandlight::jobs
 {

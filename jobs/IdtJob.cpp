@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/IdtJob.h"
+#include "jobs/IdtJob.h"
 
 #include <cerrno>
 #include <cmath>
@@ -12,16 +12,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bandlight/jobs/ConfigJob.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/plugin/SceneLinearEvidence.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/TextFile.h"
-#include "bandlight/transforms/Accuracy.h"
-#include "bandlight/transforms/Plates.h"
+#include "jobs/ConfigJob.h"
+#include "jobs/Inputs.h"
+#include "jobs/OutputPaths.h"
+#include "plugin/SceneLinearEvidence.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Exception.h"
+#include "spectral/TextFile.h"
+#include "transforms/Accuracy.h"
+#include "transforms/Plates.h"
 
 namespace bandlight::jobs
 {

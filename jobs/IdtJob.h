@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/transforms/Idt.h"
+#include "jobs/Defaults.h"
+#include "jobs/Reporter.h"
+#include "transforms/Idt.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/ImageApply.h"
+#include "jobs/ImageApply.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -13,10 +13,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Parallel.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {

@@ -9,12 +9,12 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/imageio/ImageColour.h"
-#include "bandlight/imageio/ImageFiles.h"
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/transforms/PixelKernels.h"
+#include "imageio/ImageColour.h"
+#include "imageio/ImageFiles.h"
+#include "jobs/LightGroups.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/PixelKernels.h"
 
 namespace bandlight::jobs
 {

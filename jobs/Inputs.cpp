@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/Inputs.h"
+#include "jobs/Inputs.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,11 +11,11 @@
 #include <set>
 #include <sstream>
 
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/plugin/ConfigReferences.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/TextFile.h"
+#include "jobs/Defaults.h"
+#include "plugin/ConfigReferences.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight::jobs
 {

@@ -11,11 +11,11 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/Defaults.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "jobs/Reporter.h"
+#include "spectral/CieData.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/Defaults.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/LightGroupAccuracy.h"
+#include "jobs/LightGroupAccuracy.h"
 
 #include <unistd.h>
 
@@ -7,12 +7,12 @@
 #include <chrono>
 #include <filesystem>
 
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/ImageApply.h"
+#include "jobs/LightGroups.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::jobs
 {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/jobs/SpectralJob.h"
+#include "jobs/Reporter.h"
+#include "jobs/SpectralJob.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/LightGroups.h"
+#include "jobs/LightGroups.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Parallel.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/LutJob.h"
+#include "jobs/LutJob.h"
 
 #include <memory>
 
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/plugin/OcioTransforms.h"
+#include "jobs/OutputPaths.h"
+#include "plugin/OcioTransforms.h"
 
 namespace bandlight::jobs
 {

@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/Inputs.h"
+#include "luts/LutWriter.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

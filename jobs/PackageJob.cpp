@@ -3,14 +3,14 @@
 // lit plates, and an example re-lit from A to D65: a chart of the CIE test
 // colours rendered spectrally under A, the same re-lit by the band3 and
 // Bradford looks, and the spectral truth under D65 to compare with.
-#include "bandlight/jobs/PackageJob.h"
+#include "jobs/PackageJob.h"
 
 #include <Eigen/LU>
 
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "jobs/ImageApply.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Illuminants.h"
 
 namespace bandlight::jobs
 {

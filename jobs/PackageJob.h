@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/Reporter.h"
+#include "jobs/Defaults.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/PlotJob.h"
+#include "jobs/PlotJob.h"
 
 #include <algorithm>
 #include <sstream>
 
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/report/Gnuplot.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/BandModel.h"
+#include "jobs/Inputs.h"
+#include "report/Gnuplot.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight::jobs
 {

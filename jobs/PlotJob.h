@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/transforms/Defaults.h"
+#include "jobs/Reporter.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -1,25 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/RenderJob.h"
+#include "jobs/RenderJob.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <sstream>
 
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/render/SceneColour.h"
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/SpectralImage.h"
+#include "jobs/ImageApply.h"
+#include "jobs/Inputs.h"
+#include "jobs/LightGroups.h"
+#include "jobs/OutputPaths.h"
+#include "jobs/SpectralJob.h"
+#include "plugin/ConfigBuilder.h"
+#include "plugin/OcioTransforms.h"
+#include "render/SceneColour.h"
+#include "render/SceneFile.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectralImage.h"
 
 namespace bandlight::jobs
 {

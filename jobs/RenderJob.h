@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/render/Scene.h"
-#include "bandlight/render/ScenePlan.h"
-#include "bandlight/render/SceneRenderer.h"
-#include "bandlight/report/DeltaEMap.h"
+#include "jobs/Defaults.h"
+#include "jobs/Reporter.h"
+#include "render/Scene.h"
+#include "render/ScenePlan.h"
+#include "render/SceneRenderer.h"
+#include "report/DeltaEMap.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/SpectralAccuracy.h"
+#include "jobs/SpectralAccuracy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,15 +9,15 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/report/DeltaEMap.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/Accuracy.h"
-#include "bandlight/transforms/Methods.h"
-#include "bandlight/transforms/Plates.h"
+#include "report/DeltaEMap.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/Accuracy.h"
+#include "transforms/Methods.h"
+#include "transforms/Plates.h"
 
 namespace bandlight::jobs
 {

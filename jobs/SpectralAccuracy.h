@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/jobs/Reporter.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "jobs/Reporter.h"
+#include "jobs/SpectralJob.h"
+#include "spectral/AtomicFile.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight::jobs
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/jobs/SpectralJob.h"
+#include "jobs/SpectralJob.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,15 +10,15 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/transforms/PixelKernels.h"
-#include "bandlight/transforms/Plates.h"
+#include "jobs/ImageApply.h"
+#include "jobs/LightGroups.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/PixelKernels.h"
+#include "transforms/Plates.h"
 
 namespace bandlight::jobs
 {

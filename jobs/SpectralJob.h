@@ -7,12 +7,12 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/imageio/ImageFiles.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/SpectralImage.h"
+#include "imageio/ImageFiles.h"
+#include "jobs/Defaults.h"
+#include "jobs/Frames.h"
+#include "jobs/Inputs.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/SpectralImage.h"
 
 namespace bandlight::jobs
 {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/luts/LutWriter.h"
+#include "luts/LutWriter.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <cctype>
 #include <iomanip>
 
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -7,10 +7,10 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/luts/LutEncoding.h"
-#include "bandlight/luts/Shaper.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/transforms/Defaults.h"
+#include "luts/LutEncoding.h"
+#include "luts/Shaper.h"
+#include "spectral/AtomicFile.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {

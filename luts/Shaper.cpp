@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/luts/Shaper.h"
+#include "luts/Shaper.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/ConfigBuilder.h"
+#include "plugin/ConfigBuilder.h"
 
 #include <sys/stat.h>
 
@@ -14,14 +14,14 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/plugin/ConfigReferences.h"
-#include "bandlight/plugin/SceneLinearEvidence.h"
-#include "bandlight/plugin/detail/ConfigParts.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/BandModel.h"
+#include "plugin/ConfigReferences.h"
+#include "plugin/SceneLinearEvidence.h"
+#include "plugin/detail/ConfigParts.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight
 {

@@ -6,10 +6,10 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/plugin/ConfigInputSpaces.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/transforms/Defaults.h"
+#include "plugin/ConfigInputSpaces.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/AtomicFile.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {

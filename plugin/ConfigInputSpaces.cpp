@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // How a config holds its input colour spaces (camera IDTs).
-#include "bandlight/plugin/ConfigInputSpaces.h"
+#include "plugin/ConfigInputSpaces.h"
 
-#include "bandlight/plugin/detail/ConfigParts.h"
-#include "bandlight/spectral/Exception.h"
+#include "plugin/detail/ConfigParts.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::detail
 {

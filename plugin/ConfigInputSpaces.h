@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/Colorimetry.h"
 
 namespace bandlight
 {

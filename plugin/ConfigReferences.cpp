@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/ConfigReferences.h"
+#include "plugin/ConfigReferences.h"
 
 #include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/NativeKernels.h"
+#include "plugin/NativeKernels.h"
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/transforms/PixelKernels.h"
+#include "transforms/PixelKernels.h"
 
 namespace bandlight
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/OcioTransforms.h"
+#include "plugin/OcioTransforms.h"
 
 #include <Eigen/LU>
 
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/spectral/Exception.h"
+#include "luts/LutWriter.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

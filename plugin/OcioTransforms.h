@@ -6,9 +6,9 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/transforms/Defaults.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "spectral/Colorimetry.h"
+#include "transforms/Defaults.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/SceneLinearEvidence.h"
+#include "plugin/SceneLinearEvidence.h"
 
-#include "bandlight/plugin/ConfigReferences.h"
+#include "plugin/ConfigReferences.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,8 +11,8 @@
 
 #include <Eigen/Dense>
 
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -5,7 +5,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight
 {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/render/Scene.h"
+#include "render/Scene.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/transforms/BandSet.h"
-#include "bandlight/transforms/Defaults.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Spectrum.h"
+#include "transforms/BandSet.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {

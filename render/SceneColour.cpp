@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/render/SceneColour.h"
+#include "render/SceneColour.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/SpectralImage.h"
-#include "bandlight/transforms/BandModel.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectralImage.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight::detail
 {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/render/Scene.h"
+#include "render/Scene.h"
 
 namespace bandlight::detail
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The YAML scene reader. It says no to what it would ignore: a key is
 // either used or an error naming its file, line and name.
-#include "bandlight/render/SceneFile.h"
+#include "render/SceneFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,13 +10,13 @@
 
 #include <Eigen/Geometry>
 
-#include "bandlight/render/detail/YamlReader.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/spectral/TextFile.h"
+#include "render/detail/YamlReader.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "bandlight/render/Scene.h"
+#include "render/Scene.h"
 
 namespace bandlight
 {

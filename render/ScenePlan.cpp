@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The planner: what a scene calls for, and its spectral products, computed once.
-#include "bandlight/render/ScenePlan.h"
+#include "render/ScenePlan.h"
 
 #include <algorithm>
 #include <sstream>
 
-#include "bandlight/render/SceneColour.h"
-#include "bandlight/spectral/Exception.h"
+#include "render/SceneColour.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

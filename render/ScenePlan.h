@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/render/Scene.h"
+#include "render/Scene.h"
 
 namespace bandlight
 {

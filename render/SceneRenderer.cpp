@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/render/SceneRenderer.h"
+#include "render/SceneRenderer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -10,11 +10,11 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
-#include "bandlight/render/SceneColour.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/transforms/BandModel.h"
+#include "render/SceneColour.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/Parallel.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight
 {

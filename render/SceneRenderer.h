@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/render/Scene.h"
-#include "bandlight/render/ScenePlan.h"
+#include "render/Scene.h"
+#include "render/ScenePlan.h"
 
 namespace bandlight
 {

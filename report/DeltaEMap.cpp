@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/report/DeltaEMap.h"
+#include "report/DeltaEMap.h"
 
 #include <algorithm>
 #include <cassert>
 #include <sstream>
 
-#include "bandlight/imageio/ImageFiles.h"
-#include "bandlight/report/Gnuplot.h"
-#include "bandlight/transforms/Accuracy.h"
+#include "imageio/ImageFiles.h"
+#include "report/Gnuplot.h"
+#include "transforms/Accuracy.h"
 
 namespace bandlight
 {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "bandlight/spectral/AtomicFile.h"
+#include "spectral/AtomicFile.h"
 
 namespace bandlight
 {

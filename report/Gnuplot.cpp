@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/report/Gnuplot.h"
+#include "report/Gnuplot.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -14,8 +14,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

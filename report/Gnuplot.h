@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "bandlight/spectral/AtomicFile.h"
+#include "spectral/AtomicFile.h"
 
 namespace bandlight
 {

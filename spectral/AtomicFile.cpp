@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/AtomicFile.h"
+#include "spectral/AtomicFile.h"
 
 #include <dirent.h>
 #include <signal.h>
@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/CameraFile.h"
+#include "spectral/CameraFile.h"
 
 #include <algorithm>
 #include <array>
@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/spectral/TextFile.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {

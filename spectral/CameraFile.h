@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/CieData.h"
+#include "spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/ChromaticAdaptation.h"
+#include "spectral/ChromaticAdaptation.h"
 
 #include <algorithm>
 #include <cctype>
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/CieData.h"
+#include "spectral/CieData.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "bandlight/spectral/EmbeddedData.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/EmbeddedData.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/spectral/SpectrumIO.h"
+#include "spectral/Spectrum.h"
+#include "spectral/SpectrumIO.h"
 
 namespace bandlight
 {

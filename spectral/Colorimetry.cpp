@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/Colorimetry.h"
 
 #include <cmath>
 

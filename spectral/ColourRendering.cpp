@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/ColourRendering.h"
+#include "spectral/ColourRendering.h"
 
 #include <cmath>
 #include <vector>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/GoldenSection.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/GoldenSection.h"
+#include "spectral/Illuminants.h"
 
 namespace bandlight
 {

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/Colorimetry.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 #include <cstdio>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/Illuminants.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

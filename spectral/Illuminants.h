@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/RgbSpaces.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/Colorimetry.h"
 
 namespace bandlight
 {

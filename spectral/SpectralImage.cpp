@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/SpectralImage.h"
+#include "spectral/SpectralImage.h"
 
 #include <algorithm>
 #include <cassert>
@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/spectral/TextFile.h"
+#include "spectral/Exception.h"
+#include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {

@@ -22,8 +22,8 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/CieData.h"
+#include "spectral/Spectrum.h"
 
 namespace bandlight
 {

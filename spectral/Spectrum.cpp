@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/Spectrum.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/SpectrumIO.h"
+#include "spectral/SpectrumIO.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -9,8 +9,8 @@
 #include <map>
 #include <sstream>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/TextFile.h"
+#include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/Spectrum.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/Accuracy.h"
+#include "transforms/Accuracy.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,10 +11,10 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/transforms/Upsampler.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
+#include "transforms/Upsampler.h"
 
 namespace bandlight
 {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/transforms/Defaults.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "transforms/Defaults.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/BandModel.h"
+#include "transforms/BandModel.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,8 +10,8 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight
 {

@@ -6,10 +6,10 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/transforms/BandSet.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Spectrum.h"
+#include "transforms/BandSet.h"
 
 namespace bandlight
 {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/BandSet.h"
+#include "transforms/BandSet.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/Camera.h"
+#include "transforms/Camera.h"
 
 #include <cmath>
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/transforms/Plates.h"
-#include "bandlight/transforms/RootPolynomial.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "transforms/Plates.h"
+#include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {

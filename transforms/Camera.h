@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
-#include "bandlight/transforms/Defaults.h"
+#include "spectral/CameraFile.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/SurfaceRenderer.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {

@@ -8,7 +8,7 @@
 // (python/) all take their defaults from these two files, so the three faces
 // cannot drift apart; tests/python/test_defaults.py holds Python to them.
 
-#include "bandlight/transforms/Version.h"
+#include "transforms/Version.h"
 
 namespace bandlight::defaults
 {

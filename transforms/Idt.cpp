@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/Idt.h"
+#include "transforms/Idt.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,12 +8,12 @@
 
 #include <Eigen/Dense>
 
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/GoldenSection.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Accuracy.h"
-#include "bandlight/transforms/Plates.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Exception.h"
+#include "spectral/GoldenSection.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Accuracy.h"
+#include "transforms/Plates.h"
 
 namespace bandlight
 {

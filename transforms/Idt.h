@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/transforms/Camera.h"
-#include "bandlight/transforms/RootPolynomial.h"
+#include "transforms/Camera.h"
+#include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {

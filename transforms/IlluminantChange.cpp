@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/IlluminantChange.h"
+#include "transforms/IlluminantChange.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,16 +12,16 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/transforms/BandModel.h"
-#include "bandlight/transforms/Idt.h"
-#include "bandlight/transforms/Methods.h"
-#include "bandlight/transforms/SpectralMethods.h"
-#include "bandlight/transforms/Upsampler.h"
-#include "bandlight/transforms/detail/MethodFits.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
+#include "transforms/BandModel.h"
+#include "transforms/Idt.h"
+#include "transforms/Methods.h"
+#include "transforms/SpectralMethods.h"
+#include "transforms/Upsampler.h"
+#include "transforms/detail/MethodFits.h"
 
 #include <thread>
 

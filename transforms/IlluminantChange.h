@@ -5,14 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/Methods.h"
-#include "bandlight/transforms/PixelKernels.h"
-#include "bandlight/transforms/RootPolynomial.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/Spectrum.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/Methods.h"
+#include "transforms/PixelKernels.h"
+#include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The method registry: every illuminant-change method in one table, and the
 // name parsing, descriptions and default lists read from it.
-#include "bandlight/transforms/Methods.h"
+#include "transforms/Methods.h"
 
 #include <algorithm>
 #include <cctype>
 #include <sstream>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/transforms/detail/MethodFits.h"
+#include "spectral/Exception.h"
+#include "transforms/detail/MethodFits.h"
 
 namespace bandlight
 {

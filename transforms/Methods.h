@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/BandSet.h"
-#include "bandlight/transforms/Camera.h"
-#include "bandlight/transforms/Plates.h"
-#include "bandlight/transforms/RootPolynomial.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/Spectrum.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/BandSet.h"
+#include "transforms/Camera.h"
+#include "transforms/Plates.h"
+#include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {

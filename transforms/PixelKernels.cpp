@@ -2,7 +2,7 @@
 // The pixel kernels: SIMD forms compiled once per target by Highway's
 // foreach_target, the best one chosen at run time; scalar references with
 // the same operations in the same order.
-#include "bandlight/transforms/PixelKernels.h"
+#include "transforms/PixelKernels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +11,11 @@
 #include <utility>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "bandlight/transforms/PixelKernels.cpp"
+#define HWY_TARGET_INCLUDE "transforms/PixelKernels.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "bandlight/transforms/IlluminantChange.h"
+#include "transforms/IlluminantChange.h"
 
 // ---------------------------------------------------------------------------
 // The scalar maths, once (outside the per-target part): what every SIMD

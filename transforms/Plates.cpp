@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/Plates.h"
+#include "transforms/Plates.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,8 +7,8 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "spectral/Exception.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/Spectrum.h"
-#include "bandlight/transforms/Defaults.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/Spectrum.h"
+#include "transforms/Defaults.h"
 
 namespace bandlight
 {

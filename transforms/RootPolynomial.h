@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

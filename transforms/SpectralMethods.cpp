@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/SpectralMethods.h"
+#include "transforms/SpectralMethods.h"
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight
 {

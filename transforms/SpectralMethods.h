@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {

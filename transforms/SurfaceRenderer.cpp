@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "transforms/SurfaceRenderer.h"
 
 #include <cmath>
 #include <random>

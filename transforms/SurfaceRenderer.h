@@ -6,10 +6,10 @@
 
 #include <Eigen/Core>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/Spectrum.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/Spectrum.h"
 
 namespace bandlight
 {

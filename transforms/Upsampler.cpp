@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/transforms/Upsampler.h"
+#include "transforms/Upsampler.h"
 
 #include <algorithm>
 #include <cmath>

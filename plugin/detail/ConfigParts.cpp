@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/plugin/detail/ConfigParts.h"
+#include "plugin/detail/ConfigParts.h"
 
 namespace bandlight::detail
 {

@@ -10,8 +10,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/plugin/ConfigInputSpaces.h"
+#include "plugin/ConfigBuilder.h"
+#include "plugin/ConfigInputSpaces.h"
 
 namespace bandlight::detail
 {

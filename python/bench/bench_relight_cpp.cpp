@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
 
 int main(int argc, char** argv)
 {

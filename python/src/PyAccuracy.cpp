@@ -4,8 +4,8 @@
 #include <optional>
 
 #include "PyBandlight.h"
-#include "bandlight/jobs/AccuracyJob.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/AccuracyJob.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

@@ -2,9 +2,9 @@
 // Image files and frame sequences through a look or an illuminant change,
 // as `bandlight apply` applies them (jobs/ApplyJob).
 #include "PyBandlight.h"
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/Frames.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/Frames.h"
 
 namespace bandlight::python
 {

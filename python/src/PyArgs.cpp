@@ -3,8 +3,8 @@
 #include <sstream>
 
 #include "PyBandlight.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/Parallel.h"
+#include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::python
 {

@@ -16,16 +16,16 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/BandModel.h"
-#include "bandlight/transforms/BandSet.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "jobs/Frames.h"
+#include "jobs/Inputs.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/BandModel.h"
+#include "transforms/BandSet.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::python
 {

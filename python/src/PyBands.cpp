@@ -2,8 +2,8 @@
 // The band model: band sets, band means of lights and surfaces, matching-
 // function band matrices, the band <-> working-space matrices, the tables.
 #include "PyBandlight.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/jobs/Defaults.h"
+#include "spectral/Illuminants.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

@@ -3,10 +3,10 @@
 // colour rendering, chromatic adaptation, RGB spaces — vectorised over
 // arrays of colours (..., 3) with the GIL released around the loops.
 #include "PyBandlight.h"
-#include "bandlight/jobs/ColourJobs.h"
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/ColourJobs.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/ColourRendering.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

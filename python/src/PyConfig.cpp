@@ -6,10 +6,10 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "PyBandlight.h"
-#include "bandlight/jobs/ConfigJob.h"
-#include "bandlight/jobs/LutJob.h"
-#include "bandlight/plugin/SceneLinearEvidence.h"
-#include "bandlight/jobs/Defaults.h"
+#include "jobs/ConfigJob.h"
+#include "jobs/LutJob.h"
+#include "plugin/SceneLinearEvidence.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

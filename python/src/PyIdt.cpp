@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "PyBandlight.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/IdtJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/IdtJob.h"
 
 namespace bandlight::python
 {

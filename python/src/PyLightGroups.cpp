@@ -3,9 +3,9 @@
 // beauty rebuilt as Σ relit groups + residual (jobs/LightGroups), as
 // `bandlight apply --light-group` does it to files.
 #include "PyBandlight.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/LightGroups.h"
+#include "jobs/Defaults.h"
+#include "jobs/ImageApply.h"
+#include "jobs/LightGroups.h"
 
 namespace bandlight::python
 {

@@ -3,8 +3,8 @@
 // files `bandlight render` writes (the render job, jobs/RenderJob.h), and
 // the planner's account of it.
 #include "PyBandlight.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/RenderJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/RenderJob.h"
 
 namespace bandlight::python
 {

@@ -2,8 +2,8 @@
 // Spectral images (jobs/SpectralJob): read, integrated and relit in memory,
 // and spectral EXRs converted to RGB EXRs as `bandlight spectral` does.
 #include "PyBandlight.h"
-#include "bandlight/jobs/Defaults.h"
-#include "bandlight/jobs/SpectralJob.h"
+#include "jobs/Defaults.h"
+#include "jobs/SpectralJob.h"
 
 namespace bandlight::python
 {

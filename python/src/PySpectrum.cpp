@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "PyBandlight.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/jobs/Defaults.h"
+#include "spectral/Illuminants.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

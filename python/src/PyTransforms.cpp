@@ -8,10 +8,10 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "PyBandlight.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/Parallel.h"
-#include "bandlight/jobs/Defaults.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
+#include "jobs/Defaults.h"
 
 namespace bandlight::python
 {

@@ -11,8 +11,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/SpectrumIO.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/SpectrumIO.h"
 
 namespace bandlight::detail
 {

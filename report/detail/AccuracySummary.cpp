@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/report/detail/AccuracySummary.h"
+#include "report/detail/AccuracySummary.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "bandlight/transforms/Accuracy.h"
+#include "transforms/Accuracy.h"
 
 namespace bandlight::detail
 {

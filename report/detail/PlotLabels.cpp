@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/report/detail/PlotLabels.h"
+#include "report/detail/PlotLabels.h"
 
 #include <algorithm>
 #include <cmath>

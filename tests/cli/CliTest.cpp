@@ -15,8 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/spectral/CieData.h"
+#include "spectral/CieData.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/RgbSpaces.h"
 
 using bandlight::test::Bandlight;
 using bandlight::test::Result;

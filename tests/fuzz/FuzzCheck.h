@@ -11,12 +11,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/BandModel.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/BandModel.h"
 
 namespace bandlight::fuzz
 {

@@ -6,8 +6,8 @@
 // its file.
 #include "FuzzCheck.h"
 
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/transforms/Camera.h"
+#include "spectral/CameraFile.h"
+#include "transforms/Camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {

@@ -7,9 +7,9 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include "FuzzCheck.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/plugin/ConfigReferences.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "plugin/ConfigBuilder.h"
+#include "plugin/ConfigReferences.h"
+#include "spectral/Illuminants.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 using namespace bandlight;

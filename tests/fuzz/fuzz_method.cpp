@@ -3,9 +3,9 @@
 // sets: a name either parses into a method whose A → D65 matrix is finite,
 // or is refused with an Exception — singular band sets included.
 #include "FuzzCheck.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "spectral/Illuminants.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/IlluminantChange.h"
 
 using namespace bandlight;
 

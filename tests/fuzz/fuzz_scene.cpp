@@ -2,8 +2,8 @@
 // Fuzzes the YAML scene reader, then plans and renders what it accepts at
 // 4×3 pixels, planned and literal: every accepted scene renders finite.
 #include "FuzzCheck.h"
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/render/SceneRenderer.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 
 using namespace bandlight;
 

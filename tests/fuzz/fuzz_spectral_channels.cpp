@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "FuzzCheck.h"
-#include "bandlight/spectral/SpectralImage.h"
+#include "spectral/SpectralImage.h"
 
 using namespace bandlight;
 

@@ -19,7 +19,7 @@
 
 #include "gpu/GpuRunner.h"
 #include "robustness/HardValues.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/Illuminants.h"
 
 namespace bandlight::test
 {

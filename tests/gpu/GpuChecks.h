@@ -17,7 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include "gpu/GpuRunner.h"
-#include "bandlight/plugin/ConfigBuilder.h"
+#include "plugin/ConfigBuilder.h"
 
 namespace bandlight::test
 {

@@ -11,11 +11,11 @@
 #include <catch2/catch.hpp>
 
 #include "gpu/GpuChecks.h"
-#include "bandlight/luts/LutWriter.h"
+#include "luts/LutWriter.h"
 #include "robustness/HardValues.h"
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Idt.h"
+#include "spectral/CameraFile.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Idt.h"
 
 using namespace bandlight;
 using namespace bandlight::test;

@@ -14,9 +14,9 @@
 #include <catch2/catch.hpp>
 
 #include "gpu/GpuChecks.h"
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 using namespace bandlight::test;

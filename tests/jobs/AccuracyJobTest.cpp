@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "bandlight/jobs/AccuracyJob.h"
-#include "bandlight/jobs/Inputs.h"
+#include "jobs/AccuracyJob.h"
+#include "jobs/Inputs.h"
 #include "cli/RunCommand.h"
 
 using namespace bandlight;

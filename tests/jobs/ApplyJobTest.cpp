@@ -15,10 +15,10 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/ImageApply.h"
+#include "jobs/Inputs.h"
+#include "spectral/Exception.h"
 #include "jobs/JobsTestSupport.h"
 #include "jobs/LightGroupsTestSupport.h"
 

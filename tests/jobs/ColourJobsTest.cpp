@@ -5,8 +5,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/ColourJobs.h"
-#include "bandlight/jobs/Inputs.h"
+#include "jobs/ColourJobs.h"
+#include "jobs/Inputs.h"
 #include "cli/RunCommand.h"
 
 using namespace bandlight;

@@ -5,9 +5,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/ConfigJob.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/ConfigJob.h"
+#include "jobs/Inputs.h"
+#include "spectral/Exception.h"
 #include "jobs/JobsTestSupport.h"
 
 using namespace bandlight;

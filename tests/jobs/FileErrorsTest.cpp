@@ -19,12 +19,12 @@
 #include "spectral/FileErrorCheck.h"
 
 #include "cli/RunCommand.h"
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/ImageApply.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/ImageApply.h"
+#include "jobs/Inputs.h"
+#include "jobs/SpectralJob.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;

@@ -9,10 +9,10 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "bandlight/jobs/ConfigJob.h"
-#include "bandlight/jobs/IdtJob.h"
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/ConfigJob.h"
+#include "jobs/IdtJob.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

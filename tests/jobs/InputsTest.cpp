@@ -7,9 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/Frames.h"
+#include "jobs/Inputs.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

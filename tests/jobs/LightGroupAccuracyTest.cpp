@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/LightGroupAccuracy.h"
-#include "bandlight/jobs/RenderJob.h"
+#include "jobs/LightGroupAccuracy.h"
+#include "jobs/RenderJob.h"
 #include "jobs/LightGroupsTestSupport.h"
 
 using namespace bandlight;

@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/LightGroups.h"
+#include "jobs/LightGroups.h"
 
 using namespace bandlight::jobs;
 using Catch::Matchers::Contains;

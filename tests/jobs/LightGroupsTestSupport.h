@@ -15,7 +15,7 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/Inputs.h"
+#include "jobs/Inputs.h"
 #include "cli/RunCommand.h"
 
 namespace bandlight::test

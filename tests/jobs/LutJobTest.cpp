@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/Inputs.h"
-#include "bandlight/jobs/LutJob.h"
+#include "jobs/Inputs.h"
+#include "jobs/LutJob.h"
 #include "jobs/JobsTestSupport.h"
 
 using namespace bandlight;

@@ -5,9 +5,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/Frames.h"
-#include "bandlight/jobs/OutputPaths.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/Frames.h"
+#include "jobs/OutputPaths.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 using namespace bandlight::jobs;

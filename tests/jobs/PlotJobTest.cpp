@@ -8,8 +8,8 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/jobs/PlotJob.h"
-#include "bandlight/spectral/Exception.h"
+#include "jobs/PlotJob.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;

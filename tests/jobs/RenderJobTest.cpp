@@ -13,11 +13,11 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/LightGroups.h"
-#include "bandlight/jobs/RenderJob.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/LightGroups.h"
+#include "jobs/RenderJob.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 #include "cli/RunCommand.h"
 #include "jobs/LightGroupsTestSupport.h"
 

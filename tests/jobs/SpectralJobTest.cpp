@@ -12,12 +12,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/jobs/ApplyJob.h"
-#include "bandlight/jobs/RenderJob.h"
-#include "bandlight/jobs/SpectralJob.h"
-#include "bandlight/render/SceneColour.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "jobs/ApplyJob.h"
+#include "jobs/RenderJob.h"
+#include "jobs/SpectralJob.h"
+#include "render/SceneColour.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/RgbSpaces.h"
 #include "jobs/LightGroupsTestSupport.h"
 
 using namespace bandlight;

@@ -2,6 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The tree's one structural rule: includes point down the layers only.
 
+Headers are included by their path from the repository's root
+("transforms/Methods.h"), so each include names a file of the checkout; one
+that does not (a path that would resolve only in a build tree) fails too.
+
 Each folder may include its own headers and those of the folders below it;
 an include that climbs (transforms/ including plugin/, report/ including
 jobs/) is named with its file and line and fails the test. spectral/ also
@@ -51,8 +55,11 @@ def main():
             checked += 1
             where = path.relative_to(root)
             for number, target in includes(path):
-                m = re.match(r"bandlight/([a-z]+)/", target)
-                if m and m.group(1) not in allowed:
+                m = re.match(r"([a-z]+)/", target)
+                if m and m.group(1) in BELOW and not (root / target).is_file():
+                    problems.append(f"{where}:{number}: includes {target}, which is no file "
+                                    f"of the checkout")
+                if m and m.group(1) in BELOW and m.group(1) not in allowed:
                     problems.append(f"{where}:{number}: includes {target}: "
                                     f"{folder}/ may include only {', '.join(allowed)}")
                 if folder == "spectral" and target.startswith("OpenColorIO/"):

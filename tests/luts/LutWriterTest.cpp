@@ -6,10 +6,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

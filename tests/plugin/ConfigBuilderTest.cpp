@@ -5,10 +5,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -7,10 +7,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/plugin/ConfigBuilder.h"
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Plates.h"
+#include "plugin/ConfigBuilder.h"
+#include "spectral/CameraFile.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Plates.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -7,8 +7,8 @@
 
 #include "transforms/LitMethod.h"
 
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 

@@ -4,10 +4,10 @@
 // accepts reads as docs/scenes.md says, defaults included.
 #include <catch2/catch.hpp>
 
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/render/SceneRenderer.h"
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 

@@ -13,8 +13,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/render/SceneRenderer.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 
 using namespace bandlight;
 

@@ -3,11 +3,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/render/SceneRenderer.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/RgbSpaces.h"
-#include "bandlight/transforms/BandModel.h"
+#include "render/SceneRenderer.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/RgbSpaces.h"
+#include "transforms/BandModel.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

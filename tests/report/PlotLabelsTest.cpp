@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "bandlight/report/detail/PlotLabels.h"
+#include "report/detail/PlotLabels.h"
 
 using namespace bandlight::detail;
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bandlight/spectral/Colorimetry.h"
+#include "spectral/Colorimetry.h"
 
 namespace bandlight::test
 {

@@ -7,9 +7,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/luts/LutWriter.h"
-#include "bandlight/plugin/OcioTransforms.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "luts/LutWriter.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/Illuminants.h"
 
 #include "cli/RunCommand.h"
 #include "robustness/HardValues.h"

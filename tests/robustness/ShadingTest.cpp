@@ -7,9 +7,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/render/SceneRenderer.h"
-#include "bandlight/spectral/Exception.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 

@@ -9,15 +9,15 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "bandlight/render/SceneFile.h"
-#include "bandlight/render/SceneRenderer.h"
+#include "render/SceneFile.h"
+#include "render/SceneRenderer.h"
 #include "robustness/HardValues.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/transforms/BandModel.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "spectral/SpectrumIO.h"
+#include "transforms/BandModel.h"
+#include "transforms/IlluminantChange.h"
 
 using namespace bandlight;
 using namespace bandlight::test;

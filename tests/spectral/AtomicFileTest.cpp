@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Outputs appear whole or not at all, under names no delivery script picks
 // up, and what a killed process left behind is cleared by the next run.
-#include "bandlight/spectral/AtomicFile.h"
+#include "spectral/AtomicFile.h"
 
 #include <sys/wait.h>
 #include <unistd.h>

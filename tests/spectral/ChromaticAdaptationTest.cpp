@@ -3,8 +3,8 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/ChromaticAdaptation.h"
-#include "bandlight/spectral/Exception.h"
+#include "spectral/ChromaticAdaptation.h"
+#include "spectral/Exception.h"
 
 using namespace bandlight;
 

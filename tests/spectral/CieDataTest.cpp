@@ -3,10 +3,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/spectral/SpectrumIO.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Illuminants.h"
+#include "spectral/SpectrumIO.h"
 
 using namespace bandlight;
 

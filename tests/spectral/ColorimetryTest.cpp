@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 

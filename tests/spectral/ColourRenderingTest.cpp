@@ -4,9 +4,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 

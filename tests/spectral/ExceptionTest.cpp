@@ -2,7 +2,7 @@
 // FileError: a file that cannot be opened, read, created or written carries
 // its path and errno, whatever the message says; content that was read and
 // refused is an Exception, never a FileError.
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -20,10 +20,10 @@
 
 #include "FileErrorCheck.h"
 
-#include "bandlight/spectral/AtomicFile.h"
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/spectral/SpectrumIO.h"
-#include "bandlight/spectral/TextFile.h"
+#include "spectral/AtomicFile.h"
+#include "spectral/CameraFile.h"
+#include "spectral/SpectrumIO.h"
+#include "spectral/TextFile.h"
 
 using namespace bandlight;
 namespace fs = std::filesystem;

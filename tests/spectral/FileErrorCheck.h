@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Exception.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::test
 {

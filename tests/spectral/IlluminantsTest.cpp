@@ -3,10 +3,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Parallel.h"
+#include "spectral/Parallel.h"
 
 using namespace bandlight;
 

@@ -5,8 +5,8 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/RgbSpaces.h"
+#include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

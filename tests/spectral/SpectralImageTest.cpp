@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "bandlight/spectral/SpectralImage.h"
+#include "spectral/SpectralImage.h"
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Colorimetry.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
+#include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

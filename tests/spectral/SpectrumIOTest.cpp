@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/SpectrumIO.h"
+#include "spectral/Exception.h"
+#include "spectral/SpectrumIO.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Accuracy.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Accuracy.h"
 
 #include <memory>
 

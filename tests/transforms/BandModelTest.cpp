@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/CieData.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/BandModel.h"
+#include "spectral/CieData.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/transforms/BandSet.h"
+#include "spectral/Exception.h"
+#include "transforms/BandSet.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -13,10 +13,10 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
-#include "bandlight/spectral/ColourRendering.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Idt.h"
-#include "bandlight/transforms/Plates.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Idt.h"
+#include "transforms/Plates.h"
 
 using namespace bandlight;
 

@@ -5,11 +5,11 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/BandModel.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/SurfaceRenderer.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/BandModel.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/SurfaceRenderer.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

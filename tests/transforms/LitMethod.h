@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "bandlight/transforms/IlluminantChange.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::test
 {

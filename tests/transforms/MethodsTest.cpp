@@ -5,10 +5,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/Methods.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/Methods.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

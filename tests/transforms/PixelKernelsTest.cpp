@@ -13,10 +13,10 @@
 #include <hwy/targets.h>
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/IlluminantChange.h"
+#include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
 #include "transforms/LitMethod.h"
-#include "bandlight/transforms/PixelKernels.h"
+#include "transforms/PixelKernels.h"
 
 using namespace bandlight;
 

@@ -13,13 +13,13 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/CameraFile.h"
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/Accuracy.h"
-#include "bandlight/transforms/Camera.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/Plates.h"
+#include "spectral/CameraFile.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/Accuracy.h"
+#include "transforms/Camera.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/Plates.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -4,9 +4,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/RootPolynomial.h"
+#include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/RootPolynomial.h"
 
 using namespace bandlight;
 

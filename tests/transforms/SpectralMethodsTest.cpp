@@ -9,11 +9,11 @@
 
 #include <Eigen/LU>
 
-#include "bandlight/spectral/Exception.h"
-#include "bandlight/spectral/Illuminants.h"
-#include "bandlight/transforms/IlluminantChange.h"
-#include "bandlight/transforms/SpectralMethods.h"
-#include "bandlight/transforms/Upsampler.h"
+#include "spectral/Exception.h"
+#include "spectral/Illuminants.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/SpectralMethods.h"
+#include "transforms/Upsampler.h"
 
 using namespace bandlight;
 using Catch::Matchers::Contains;

@@ -6,7 +6,7 @@
 // what distinguishes its methods from the spec or its registry entry, never
 // by comparing method values. Not installed.
 
-#include "bandlight/transforms/IlluminantChange.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::detail
 {
