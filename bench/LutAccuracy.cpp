@@ -4,7 +4,7 @@
 // For lit and for white-balanced plates (the looks differ: a balanced band3
 // look is not neutral, and its LUT errs differently). For greys from 1e-4 to 65504 and for random
 // colours (each channel 0.2–1 of a level drawn log-uniformly from 1e-3 to 65504), the relative
-// error max|lut - exact| / max|exact| per pixel: median, 95th percentile and max.
+// error max|lut - exact| / max|exact| per pixel: median, 95th percentile and max (nearest rank).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +16,7 @@
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
+#include "spectral/Statistics.h"
 
 using namespace bandlight;
 
@@ -36,11 +37,6 @@ double Error(const OCIO::ConstCPUProcessorRcPtr& exact, const OCIO::ConstCPUProc
     return e;
 }
 
-double Percentile(std::vector<double> v, double p)
-{
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, size_t(p * double(v.size())))];
-}
 }  // namespace
 
 int main(int argc, char** argv)

@@ -342,18 +342,13 @@ std::string Describe(const IdtEntry& e, const std::string& camera, const IdtResu
 /// camera RGB (d.input), L*a*b* relative to d.labWhite.
 IdtError ErrorAgainst(const ColourFit& d, const Mat3& idt, const Mat3& reference)
 {
-    IdtError e;
-    e.count = int(d.input.size());
     std::vector<double> de;
     for (const Vec3& c : d.input)
     {
         de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * (idt * c), d.labWhite),
                                 XyzToLab(d.rgbToXyz * (reference * c), d.labWhite)));
-        e.mean += de.back() / double(d.input.size());
-        e.max = std::max(e.max, de.back());
     }
-    e.p95 = Percentile(de, 0.95);
-    return e;
+    return IdtError::Of(Summarise(std::move(de)));
 }
 
 /// What every fit of a request shares: the working space, the adaptation of
@@ -582,18 +577,14 @@ ChartShot ReadChart(const IdtRequest& r, Reporter& reporter)
 IdtError ChartError(const ColourFit& d, const std::string& set,
                     const std::function<Vec3(const Vec3&)>& apply)
 {
-    IdtError err;
-    err.set = set;
-    err.count = int(d.input.size());
     std::vector<double> de;
     for (size_t i = 0; i < d.input.size(); ++i)
     {
         de.push_back(DeltaE2000(XyzToLab(d.rgbToXyz * apply(d.input[i]), d.labWhite),
                                 XyzToLab(d.rgbToXyz * d.target[i], d.labWhite)));
-        err.mean += de.back() / double(d.input.size());
-        err.max = std::max(err.max, de.back());
     }
-    err.p95 = Percentile(de, 0.95);
+    IdtError err = IdtError::Of(Summarise(std::move(de)));
+    err.set = set;
     return err;
 }
 

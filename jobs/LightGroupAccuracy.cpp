@@ -13,6 +13,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"
+#include "spectral/Statistics.h"
 
 namespace bandlight::jobs
 {
@@ -54,17 +55,8 @@ ImageData ReadWhole(const std::string& path)
 /// Mean and 95th percentile.
 std::pair<double, double> Summary(std::vector<double> v)
 {
-    if (v.empty())
-    {
-        return {0.0, 0.0};
-    }
-    double sum = 0.0;
-    for (const double x : v)
-    {
-        sum += x;
-    }
-    std::sort(v.begin(), v.end());
-    return {sum / double(v.size()), v[std::min(v.size() - 1, size_t(0.95 * double(v.size())))]};
+    const Statistics s = Summarise(std::move(v));
+    return {s.mean, s.p95};
 }
 
 /// A temporary folder for the run's files, removed with it.

@@ -7,6 +7,7 @@
 
 #include "imageio/ImageFiles.h"
 #include "report/Gnuplot.h"
+#include "spectral/Statistics.h"
 #include "transforms/Accuracy.h"
 
 namespace bandlight
@@ -30,16 +31,12 @@ void DeltaEMap::set(size_t index, double deltaE)
 
 DeltaESummary DeltaEMap::summary() const
 {
+    const Statistics all = Summarise(m_measured);
     DeltaESummary s;
-    s.pixels = m_measured.size();
-    double sum = 0.0;
-    for (const double e : m_measured)
-    {
-        sum += e;
-    }
-    s.mean = m_measured.empty() ? 0.0 : sum / double(m_measured.size());
-    s.p95 = Percentile(m_measured, 0.95);
-    s.max = Percentile(m_measured, 1.0);
+    s.pixels = all.count;
+    s.mean = all.mean;
+    s.p95 = all.p95;
+    s.max = all.max;
     return s;
 }
 

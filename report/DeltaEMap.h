@@ -26,7 +26,7 @@ struct DeltaESummary
 {
     size_t pixels = 0;  ///< how many were measured
     double mean = 0.0;
-    double p95 = 0.0;  ///< 95th percentile, nearest rank (Percentile, transforms/Accuracy.h)
+    double p95 = 0.0;  ///< 95th percentile, nearest rank (spectral/Statistics.h)
     double max = 0.0;
 };
 

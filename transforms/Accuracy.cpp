@@ -32,17 +32,6 @@ AccuracyOptions DefaultAccuracyOptions()
     return o;
 }
 
-double Percentile(std::vector<double> values, double p)
-{
-    if (values.empty())
-    {
-        return 0.0;
-    }
-    std::sort(values.begin(), values.end());
-    const size_t rank = size_t(std::ceil(p * double(values.size())));
-    return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
-}
-
 namespace
 {
 
@@ -78,16 +67,16 @@ Errors Score(const Judge& judge, const std::vector<Vec3>& predicted,
         const double d = DeltaE2000(XyzToLab(judge.rgbToXyz * p, white),
                                     XyzToLab(judge.rgbToXyz * reference[k], white));
         de.push_back(d);
-        e.mean += d;
         if (d > worst)
         {
             worst = d;
             e.worst = names[k].name;
         }
     }
-    e.mean = de.empty() ? 0.0 : e.mean / double(de.size());
-    e.p95 = Percentile(de, 0.95);
-    e.max = std::max(worst, 0.0);
+    const Statistics s = Summarise(std::move(de));
+    e.mean = s.mean;
+    e.p95 = s.p95;
+    e.max = s.max;
     return e;
 }
 

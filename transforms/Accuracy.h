@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "spectral/Statistics.h"
 #include "transforms/Defaults.h"
 #include "transforms/IlluminantChange.h"
 #include "transforms/SurfaceRenderer.h"
@@ -137,8 +138,5 @@ std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& options,
 /// fitted in CIELAB on that very set and measured on it, k = 1. No method
 /// that sees only the pixel does much better on that set.
 std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& options);
-
-/// Percentile p (0–1) of values, nearest rank; 0 for none.
-double Percentile(std::vector<double> values, double p);
 
 }  // namespace bandlight

@@ -253,19 +253,15 @@ IdtError IdtProblem::errors(const Mat3& idt, const std::vector<NamedSpectrum>& s
 {
     const ColourFit d = data(set);
     std::vector<double> de;
-    IdtError e;
-    e.set = name;
-    e.count = int(set.size());
     for (size_t i = 0; i < d.input.size(); ++i)
     {
         const Vec3 lab = XyzToLab(d.rgbToXyz * (idt * d.input[i]), d.labWhite);
         const Vec3 ref = XyzToLab(d.rgbToXyz * d.target[i], d.labWhite);
         de.push_back(DeltaE2000(lab, ref));
-        e.mean += de.back();
-        e.max = std::max(e.max, de.back());
     }
-    e.mean /= de.empty() ? 1.0 : double(de.size());
-    e.p95 = Percentile(de, 0.95);
+    IdtError e = IdtError::Of(Summarise(std::move(de)));
+    e.set = name;
+    e.count = int(set.size());
     return e;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "spectral/Statistics.h"
 #include "transforms/Camera.h"
 #include "transforms/RootPolynomial.h"
 
@@ -51,6 +52,17 @@ struct IdtError
     double mean = 0.0;
     double p95 = 0.0;  ///< nearest rank (Percentile)
     double max = 0.0;
+
+    /// The figures of a summary (the set's name left empty).
+    static IdtError Of(const Statistics& s)
+    {
+        IdtError e;
+        e.count = int(s.count);
+        e.mean = s.mean;
+        e.p95 = s.p95;
+        e.max = s.max;
+        return e;
+    }
 };
 
 /// One camera under one light: its white balance, the colours its
