@@ -9,7 +9,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "jobs/SpectralJob.h"
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"

@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/Exception.h"
 

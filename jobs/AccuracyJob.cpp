@@ -10,14 +10,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "jobs/Frames.h"
-#include "jobs/OutputPaths.h"
+#include "farm/Frames.h"
+#include "farm/OutputPaths.h"
 #include "plugin/OcioTransforms.h"
 #include "report/Gnuplot.h"
-#include "report/detail/AccuracySummary.h"
+#include "measure/detail/AccuracySummary.h"
 #include "report/detail/PlotLabels.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {
@@ -227,7 +228,7 @@ std::map<std::string, double> CostAllThreads(const std::vector<CostRow>& cost)
 {
     std::map<std::string, double> costAll;
     std::vector<double> matrixCosts;
-    const int allThreads = int(std::max(1u, std::thread::hardware_concurrency()));
+    const int allThreads = CoreCount();
     for (const CostRow& c : cost)
     {
         if (c.threads == allThreads && c.form != CostForm::DIRECT_FIT && c.form != CostForm::NATIVE)

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Cost.h"
+#include "measure/Cost.h"
 #include "jobs/Inputs.h"
 #include "jobs/SpectralAccuracy.h"
 #include "transforms/Accuracy.h"

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "jobs/AccuracyJob.h"
-#include "report/detail/AccuracySummary.h"
+#include "measure/detail/AccuracySummary.h"
 
 namespace bandlight::jobs
 {

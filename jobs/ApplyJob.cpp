@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Frames.h"
-#include "jobs/ImageApply.h"
-#include "jobs/LightGroups.h"
+#include "farm/Frames.h"
+#include "imaging/ImageApply.h"
+#include "imaging/LightGroups.h"
 #include "plugin/NativeKernels.h"
 #include "plugin/OcioTransforms.h"
 #include "plugin/SceneLinearEvidence.h"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 #include "jobs/Inputs.h"
 
 namespace bandlight::jobs

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "jobs/OutputPaths.h"
+#include "farm/OutputPaths.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::jobs

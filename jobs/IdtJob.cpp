@@ -14,7 +14,7 @@
 
 #include "jobs/ConfigJob.h"
 #include "jobs/Inputs.h"
-#include "jobs/OutputPaths.h"
+#include "farm/OutputPaths.h"
 #include "plugin/SceneLinearEvidence.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ColourRendering.h"

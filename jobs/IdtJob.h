@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "jobs/Defaults.h"
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "transforms/Idt.h"
 
 namespace bandlight::jobs

@@ -59,12 +59,6 @@ size_t LineInMessage(const std::string& what)
 }
 }  // namespace
 
-Reporter& SilentReporter()
-{
-    static Reporter silent;
-    return silent;
-}
-
 Light CheckedIlluminant(const NamedSpectrum& s, const std::string& source, Reporter& reporter)
 {
     NamedSpectrum checked = s;

@@ -11,7 +11,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "spectral/CieData.h"
 #include "spectral/SpectrumIO.h"
 #include "transforms/Defaults.h"

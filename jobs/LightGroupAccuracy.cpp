@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "jobs/ApplyJob.h"
-#include "jobs/ImageApply.h"
-#include "jobs/LightGroups.h"
+#include "imaging/ImageApply.h"
+#include "imaging/LightGroups.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"

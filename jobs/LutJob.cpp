@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "jobs/OutputPaths.h"
+#include "farm/OutputPaths.h"
 #include "plugin/OcioTransforms.h"
 
 namespace bandlight::jobs

@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "plugin/ConfigBuilder.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Illuminants.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "jobs/Defaults.h"
 #include "jobs/Defaults.h"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "transforms/Defaults.h"
 
 namespace bandlight::jobs

@@ -6,10 +6,10 @@
 #include <chrono>
 #include <sstream>
 
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "jobs/Inputs.h"
-#include "jobs/LightGroups.h"
-#include "jobs/OutputPaths.h"
+#include "imaging/LightGroups.h"
+#include "farm/OutputPaths.h"
 #include "jobs/SpectralJob.h"
 #include "plugin/ConfigBuilder.h"
 #include "plugin/OcioTransforms.h"

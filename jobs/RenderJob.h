@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "jobs/Defaults.h"
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "render/Scene.h"
 #include "render/ScenePlan.h"
 #include "render/SceneRenderer.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 #include "jobs/SpectralJob.h"
 #include "spectral/AtomicFile.h"
 #include "transforms/SurfaceRenderer.h"

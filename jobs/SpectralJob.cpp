@@ -10,8 +10,8 @@
 
 #include <Eigen/LU>
 
-#include "jobs/ImageApply.h"
-#include "jobs/LightGroups.h"
+#include "imaging/ImageApply.h"
+#include "imaging/LightGroups.h"
 #include "plugin/ConfigBuilder.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"

@@ -9,7 +9,7 @@
 
 #include "imageio/ImageFiles.h"
 #include "jobs/Defaults.h"
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/SpectralImage.h"

@@ -20,5 +20,5 @@ supp="$PWD/tests/sanitizers"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:check_initialization_order=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
-ctest --test-dir "$build" --output-on-failure
+ctest --test-dir "$build" -j"$(nproc)" --output-on-failure
 scripts/fuzz.sh "$build" "$seconds"

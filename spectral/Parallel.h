@@ -18,12 +18,18 @@ namespace bandlight
 /// exhaust the process's thread or memory limits.
 constexpr int kMaxThreads = 256;
 
+/// The cores of this machine (at least 1): the one place bandlight asks.
+inline int CoreCount()
+{
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 /// The thread count a job actually uses: `requested` threads (0 or less:
 /// one per core), at most kMaxThreads and at most `work` (one thread per
 /// unit of work at most), at least 1.
 inline int ThreadCount(int requested, size_t work)
 {
-    int n = requested > 0 ? requested : int(std::max(1u, std::thread::hardware_concurrency()));
+    int n = requested > 0 ? requested : CoreCount();
     n = std::min(n, kMaxThreads);
     n = int(std::min<size_t>(size_t(n), std::max<size_t>(work, 1)));
     return std::max(n, 1);

@@ -4,7 +4,7 @@
 #include "PyBandlight.h"
 #include "jobs/ApplyJob.h"
 #include "jobs/Defaults.h"
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 
 namespace bandlight::python
 {

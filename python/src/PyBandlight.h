@@ -16,7 +16,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"

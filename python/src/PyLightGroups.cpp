@@ -4,8 +4,8 @@
 // `bandlight apply --light-group` does it to files.
 #include "PyBandlight.h"
 #include "jobs/Defaults.h"
-#include "jobs/ImageApply.h"
-#include "jobs/LightGroups.h"
+#include "imaging/ImageApply.h"
+#include "imaging/LightGroups.h"
 
 namespace bandlight::python
 {

@@ -16,7 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include "jobs/ApplyJob.h"
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "jobs/Inputs.h"
 #include "spectral/Exception.h"
 #include "jobs/JobsTestSupport.h"

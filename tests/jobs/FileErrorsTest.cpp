@@ -20,7 +20,7 @@
 
 #include "cli/RunCommand.h"
 #include "jobs/ApplyJob.h"
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "jobs/Inputs.h"
 #include "jobs/SpectralJob.h"
 #include "spectral/Exception.h"

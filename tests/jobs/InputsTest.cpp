@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "cli/RunCommand.h"
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 #include "jobs/Inputs.h"
 #include "spectral/Exception.h"
 

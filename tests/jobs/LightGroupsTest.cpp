@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "jobs/LightGroups.h"
+#include "imaging/LightGroups.h"
 
 using namespace bandlight::jobs;
 using Catch::Matchers::Contains;

@@ -5,8 +5,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "jobs/Frames.h"
-#include "jobs/OutputPaths.h"
+#include "farm/Frames.h"
+#include "farm/OutputPaths.h"
 #include "spectral/Exception.h"
 
 using namespace bandlight;

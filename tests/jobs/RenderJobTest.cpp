@@ -13,7 +13,7 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "jobs/LightGroups.h"
+#include "imaging/LightGroups.h"
 #include "jobs/RenderJob.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"

@@ -27,8 +27,12 @@ BELOW = {
     "luts": ["spectral", "transforms"],
     "plugin": ["spectral", "transforms", "luts"],
     "imageio": ["spectral", "transforms", "luts", "plugin"],
+    "farm": ["spectral"],
+    "imaging": ["spectral", "transforms", "luts", "plugin", "imageio"],
+    "measure": ["spectral", "transforms", "luts", "plugin", "imageio", "imaging"],
     "report": ["spectral", "transforms", "luts", "plugin", "imageio"],
-    "jobs": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "report"],
+    "jobs": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm", "imaging",
+             "measure", "report"],
 }
 # The faces: they may include every library layer, and never each other.
 FACES = ["cli", "python/src", "bench"]

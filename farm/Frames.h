@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "jobs/Reporter.h"
+#include "farm/Reporter.h"
 
 namespace bandlight::jobs
 {

@@ -11,7 +11,7 @@
 
 #include "imageio/ImageColour.h"
 #include "imageio/ImageFiles.h"
-#include "jobs/LightGroups.h"
+#include "imaging/LightGroups.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/RgbSpaces.h"
 #include "transforms/PixelKernels.h"

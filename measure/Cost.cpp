@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Cost.h"
+#include "measure/Cost.h"
 
 #include <algorithm>
 #include <chrono>
 #include <random>
 #include <thread>
 
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 #include "luts/LutWriter.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
+#include "spectral/Parallel.h"
 #include "transforms/Defaults.h"
 #include "transforms/SurfaceRenderer.h"
 
@@ -47,7 +48,7 @@ std::vector<float> TestPixels(long pixels, int channels)
 
 int AllThreads()
 {
-    return int(std::max(1u, std::thread::hardware_concurrency()));
+    return CoreCount();
 }
 
 Light L(const char* n)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "report/detail/AccuracySummary.h"
+#include "measure/detail/AccuracySummary.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/LightGroups.h"
+#include "imaging/LightGroups.h"
 
 #include <algorithm>
 #include <array>

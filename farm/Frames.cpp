@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Frames.h"
+#include "farm/Frames.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,8 +14,9 @@
 #include <thread>
 #include <unordered_set>
 
-#include "jobs/OutputPaths.h"
+#include "farm/OutputPaths.h"
 #include "spectral/Exception.h"
+#include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {
@@ -276,7 +277,7 @@ namespace
 /// machine's memory, at most the cores and at most 4.
 size_t FramesInFlight(const std::string& first)
 {
-    const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    const size_t cores = size_t(CoreCount());
     std::error_code ec;
     const double bytes = double(std::filesystem::file_size(first, ec));
     const double pages = double(::sysconf(_SC_PHYS_PAGES));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/ImageApply.h"
+#include "imaging/ImageApply.h"
 
 #include <dlfcn.h>
 #include <unistd.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/OutputPaths.h"
+#include "farm/OutputPaths.h"
 
 #include <cerrno>
 #include <cstring>
