@@ -50,9 +50,13 @@ CameraShot::CameraShot(const SpectralCamera& camera, const Spectrum& light)
     }
     m_a = camera.sensitivities().array().rowwise() * s.array();
     const Vec3 white = m_a.rowwise().sum();
+    // A channel that records less than 1e-12 of the strongest one records
+    // nothing: its gain would be past 1e12 (past double's range for a
+    // channel of denormal sensitivities), balancing noise, not light.
+    const double strongest = white.cwiseAbs().maxCoeff();
     for (int c = 0; c < 3; ++c)
     {
-        if (!(white[c] > 0.0) || !std::isfinite(white[c]))
+        if (!(white[c] > 1e-12 * strongest) || !std::isfinite(white[c]))
         {
             throw Exception(camera.label() + ": its " +
                             (c == 0   ? "red"

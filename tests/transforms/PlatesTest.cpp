@@ -409,6 +409,14 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
     CHECK_THROWS_WITH(
         CameraShot(blue, Spectrum(380.0, 5.0, red)),
         Contains("ir.csv: camera: its blue channel records nothing under this light"));
+    // Nor one whose channel records a denormal trace of what the others do:
+    // its gain would be infinite (found by fuzz_camera; corpus
+    // dead-blue-channel.csv).
+    const SpectralCamera trace(
+        ReadCameraText("nm,R,G,B\n380,1,1,1e-320\n780,1,1,1e-320\n", "trace.csv"));
+    CHECK_THROWS_WITH(CameraShot(trace, BuiltinIlluminant("D65")),
+                      Contains("trace.csv: camera: its blue channel records nothing under this "
+                               "light"));
 }
 
 TEST_CASE("rootpoly-camera needs a camera", "[transforms][camera]")
