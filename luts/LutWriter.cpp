@@ -15,9 +15,6 @@ namespace bandlight
 namespace
 {
 
-constexpr const char* kClfFormat = "Academy/ASC Common LUT Format";
-constexpr const char* kCtfFormat = "Color Transform Format";
-
 /// `t` as a group; a group is copied whole, keeping its name and description.
 OCIO::GroupTransformRcPtr AsGroup(const OCIO::ConstTransformRcPtr& t)
 {
@@ -51,13 +48,13 @@ void Apply(const OCIO::ConstTransformRcPtr& t, std::vector<float>& rgb)
 void WriteGroup(const OCIO::GroupTransformRcPtr& group, LutFormat format, const std::string& path,
                 const std::string& description, OutputSet& outputs)
 {
+    const char* ocioFormat = FindLutFormat(format).ocioFormat;
     if (!description.empty() && !group->getFormatMetadata().getNumChildrenElements())
     {
         group->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION, description.c_str());
     }
     OCIO::ConstConfigRcPtr raw = OCIO::Config::CreateRaw();
-    outputs.write(path, [&](std::ostream& os)
-                  { group->write(raw, format == LutFormat::CTF ? kCtfFormat : kClfFormat, os); });
+    outputs.write(path, [&](std::ostream& os) { group->write(raw, ocioFormat, os); });
 }
 
 /// A config for OCIO's Baker: "lut_in" is the lattice's (encoded) input,
@@ -93,12 +90,13 @@ void SetLattice(OCIO::Lut3DTransform& lut, const std::vector<float>& lattice, in
     }
 }
 
-/// Writes a lattice through OCIO's Baker in `format`: the Baker samples a
+/// Writes a lattice through OCIO's Baker in `o.format`: the Baker samples a
 /// config's processor, so it is given the lattice as a Lut3D from the
 /// (shaper-encoded) input space to the output space, at the same nodes.
-void BakeThroughOcio(const std::vector<float>& lattice, const LutOptions& o, const char* format,
+void BakeThroughOcio(const std::vector<float>& lattice, const LutOptions& o,
                      const std::string& path, OutputSet& set)
 {
+    const char* format = FindLutFormat(o.format).ocioFormat;
     OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
     lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
     SetLattice(*lut, lattice, o.size);
@@ -186,26 +184,6 @@ std::string ShaperCompanionPath(const std::string& path)
     return (hasExt ? path.substr(0, dot) : path) + ".shaper.clf";
 }
 
-/// The name of OCIO's Baker format for a format the Baker writes.
-const char* BakerFormat(LutFormat format)
-{
-    switch (format)
-    {
-        case LutFormat::CUBE:
-            return "iridas_cube";
-        case LutFormat::THREE_DL:
-            return "flame";
-        case LutFormat::RESOLVE_CUBE:
-            return "resolve_cube";
-        case LutFormat::CINESPACE:
-            return "cinespace";
-        case LutFormat::HOUDINI:
-            return "houdini";
-        default:
-            return "";
-    }
-}
-
 /// A log-encoded 3D LUT (ACEScct, ACEScc in and out) in any format: the
 /// lattice over the encoded [0, 1] needs no shaper, so the hosts' formats
 /// hold it through the Baker without a pre-LUT, and CLF/CTF as a lone Lut3D.
@@ -220,10 +198,9 @@ void WriteEncodedLut(const PixelFunction& exact, const LutOptions& o, const std:
         description += (description.empty() ? "" : " ") +
                        DescribeLutEncoding(o.encoding, "the working space's");
     }
-    switch (o.format)
+    switch (FindLutFormat(o.format).writer)
     {
-        case LutFormat::CLF:
-        case LutFormat::CTF:
+        case LutWriterKind::GROUP:
         {
             OCIO::Lut3DTransformRcPtr lut = OCIO::Lut3DTransform::Create(unsigned(o.size));
             lut->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
@@ -234,14 +211,14 @@ void WriteEncodedLut(const PixelFunction& exact, const LutOptions& o, const std:
             WriteGroup(group, o.format, path, description, set);
             return;
         }
-        case LutFormat::SPI3D:
+        case LutWriterKind::OWN_SPI3D:
             WriteSpi3d(lattice, o.size, path, set);
             return;
-        default:
+        case LutWriterKind::BAKER:
         {
             LutOptions withDescription = o;
             withDescription.description = description;
-            BakeThroughOcio(lattice, withDescription, BakerFormat(o.format), path, set);
+            BakeThroughOcio(lattice, withDescription, path, set);
             return;
         }
     }
@@ -251,17 +228,28 @@ void WriteEncodedLut(const PixelFunction& exact, const LutOptions& o, const std:
 
 const std::vector<LutFormatEntry>& LutFormats()
 {
+    using W = LutWriterKind;
+    using S = LutShaperRule;
     // clang-format off
     static const std::vector<LutFormatEntry> formats = {
-        {LutFormat::CLF, "clf", {}, "clf", true, "Academy/ASC Common LUT Format (XML)"},
-        {LutFormat::CTF, "ctf", {}, "ctf", true, "Autodesk Color Transform Format (XML)"},
-        {LutFormat::CUBE, "cube", {}, "cube", true, "Iridas/Adobe .cube 3D LUT"},
-        {LutFormat::SPI3D, "spi3d", {}, "spi3d", true, "Sony Pictures Imageworks 3D LUT"},
-        {LutFormat::THREE_DL, "3dl", {}, "3dl", true, "Autodesk Flame 3D LUT (integer values)"},
+        {LutFormat::CLF, "clf", {}, "clf", true, "Academy/ASC Common LUT Format (XML)",
+         W::GROUP, "Academy/ASC Common LUT Format", S::IN_FILE,
+         "OCIO 2 hosts (Nuke, Blender, Resolve 18+, oiiotool), ACES tools"},
+        {LutFormat::CTF, "ctf", {}, "ctf", true, "Autodesk Color Transform Format (XML)",
+         W::GROUP, "Color Transform Format", S::IN_FILE, "OCIO 2 hosts, Autodesk Flame and Maya"},
+        {LutFormat::CUBE, "cube", {}, "cube", true, "Iridas/Adobe .cube 3D LUT",
+         W::BAKER, "iridas_cube", S::COMPANION, "almost every grading and compositing host"},
+        {LutFormat::SPI3D, "spi3d", {}, "spi3d", true, "Sony Pictures Imageworks 3D LUT",
+         W::OWN_SPI3D, "", S::COMPANION, "OCIO 1 and 2 hosts"},
+        {LutFormat::THREE_DL, "3dl", {}, "3dl", true, "Autodesk Flame 3D LUT (integer values)",
+         W::BAKER, "flame", S::COMPANION, "Autodesk Flame and Lustre, Nuke"},
         {LutFormat::RESOLVE_CUBE, "resolve_cube", {"resolve-cube"}, "cube", false,
-         "DaVinci Resolve .cube with a 1D pre-LUT"},
-        {LutFormat::CINESPACE, "csp", {"cinespace"}, "csp", true, "Rising Sun cinespace"},
-        {LutFormat::HOUDINI, "houdini", {"lut"}, "lut", true, "SideFX Houdini .lut"},
+         "DaVinci Resolve .cube with a 1D pre-LUT",
+         W::BAKER, "resolve_cube", S::NONE_FOR_HDR, "DaVinci Resolve"},
+        {LutFormat::CINESPACE, "csp", {"cinespace"}, "csp", true, "Rising Sun cinespace",
+         W::BAKER, "cinespace", S::NONE_FOR_HDR, "cineSpace, Nuke"},
+        {LutFormat::HOUDINI, "houdini", {"lut"}, "lut", true, "SideFX Houdini .lut",
+         W::BAKER, "houdini", S::NONE_FOR_HDR, "SideFX Houdini"},
     };
     // clang-format on
     return formats;
@@ -275,7 +263,9 @@ std::string LowerText(std::string t)
     return t;
 }
 
-const LutFormatEntry& EntryOf(LutFormat format)
+}  // namespace
+
+const LutFormatEntry& FindLutFormat(LutFormat format)
 {
     for (const LutFormatEntry& e : LutFormats())
     {
@@ -286,7 +276,6 @@ const LutFormatEntry& EntryOf(LutFormat format)
     }
     throw Exception("LUT format " + std::to_string(int(format)) + " is not in the table");
 }
-}  // namespace
 
 std::string LutFormatChoices()
 {
@@ -313,7 +302,7 @@ LutFormat ParseLutFormat(const std::string& text)
 
 const char* LutExtension(LutFormat format)
 {
-    return EntryOf(format).extension;
+    return FindLutFormat(format).extension;
 }
 
 LutFormat LutFormatForPath(const std::string& path, const std::string& format)
@@ -332,10 +321,10 @@ LutFormat LutFormatForPath(const std::string& path, const std::string& format)
     if (!format.empty())
     {
         const LutFormat f = ParseLutFormat(format);
-        if (ext != EntryOf(f).extension)
+        if (ext != FindLutFormat(f).extension)
         {
-            throw ParameterError("{out} '" + OneLine(path, 200) + "': a " + EntryOf(f).name +
-                                 " LUT file is named ." + EntryOf(f).extension +
+            throw ParameterError("{out} '" + OneLine(path, 200) + "': a " + FindLutFormat(f).name +
+                                 " LUT file is named ." + FindLutFormat(f).extension +
                                  " (hosts choose the reader by the extension)");
         }
         return f;
@@ -432,7 +421,7 @@ OCIO::GroupTransformRcPtr LatticeTransform(const PixelFunction& exact, const Sha
 LutFiles WriteLut(const OCIO::ConstTransformRcPtr& exact, bool isMatrix, const LutOptions& o,
                   const std::string& path, OutputSet* outputs)
 {
-    if ((o.format == LutFormat::CLF || o.format == LutFormat::CTF) && isMatrix && !o.forceLattice &&
+    if (FindLutFormat(o.format).writer == LutWriterKind::GROUP && isMatrix && !o.forceLattice &&
         o.encoding == LutEncoding::LINEAR)
     {
         LutFiles files;
@@ -468,14 +457,14 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
         files.encoding = o.encoding;
         return files;
     }
-    if (o.format == LutFormat::CLF || o.format == LutFormat::CTF)
+    const LutFormatEntry& entry = FindLutFormat(o.format);
+    if (entry.shaper == LutShaperRule::IN_FILE)
     {
         WriteGroup(LatticeTransform(exact, o.shaper, o.size), o.format, path, o.description, set);
         own.commit();
         return files;
     }
-    if (o.format == LutFormat::RESOLVE_CUBE || o.format == LutFormat::CINESPACE ||
-        o.format == LutFormat::HOUDINI)
+    if (entry.shaper == LutShaperRule::NONE_FOR_HDR)
     {
         // OCIO 2.1's Baker samples these formats' 1D pre-LUT uniformly over
         // the linear input range (resolve_cube, houdini: 4096 points 32 apart
@@ -494,8 +483,7 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
                 "log-encoded values, or {format=}cube (or spi3d, 3dl) with its companion shaper "
                 "CLF");
         }
-        BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o, BakerFormat(o.format), path,
-                        set);
+        BakeThroughOcio(BakeLattice(exact, o.shaper, o.size, false), o, path, set);
         own.commit();
         return files;
     }
@@ -513,13 +501,13 @@ LutFiles WriteLut(const PixelFunction& exact, const LutOptions& requested, const
     }
     // Bake into memory first, so a failure leaves no file behind.
     const std::vector<float> lattice = BakeLattice(exact, o.shaper, o.size, files.outputEncoded);
-    if (o.format == LutFormat::SPI3D)
+    if (entry.writer == LutWriterKind::OWN_SPI3D)
     {
         WriteSpi3d(lattice, o.size, path, set);
     }
     else
     {
-        BakeThroughOcio(lattice, o, BakerFormat(o.format), path, set);
+        BakeThroughOcio(lattice, o, path, set);
     }
     if (OCIO::TransformRcPtr s = o.shaper.transform())
     {

@@ -31,8 +31,34 @@ enum class LutFormat
     HOUDINI,       ///< SideFX Houdini .lut, Baker "houdini"
 };
 
-/// A LUT format's one table entry: its names, its file extension, whether
-/// OpenColorIO's Baker writes it and under what name.
+/// Who writes a LUT format's files.
+enum class LutWriterKind
+{
+    /// OCIO's GroupTransform::write (CLF, CTF): a matrix stays a matrix, a
+    /// lattice carries its shaper inside the same file.
+    GROUP,
+    /// OCIO's Baker, under the entry's `baker` name.
+    BAKER,
+    /// bandlight's own writer of the format (SPI 3D: OCIO 2.1 reads it but
+    /// has no writer for it).
+    OWN_SPI3D,
+};
+
+/// How a format holds the log shaper a scene-linear HDR lattice needs.
+enum class LutShaperRule
+{
+    IN_FILE,    ///< in the same file (a CLF/CTF group: shaper, Lut3D, inverse shaper)
+    COMPANION,  ///< a companion <name>.shaper.clf applied before and inverted after
+    /// Only as the format's own 1D pre-LUT, which OCIO 2.1 bakes too
+    /// coarsely for HDR: the format is for display-referred [0, 1] data
+    /// (shaper none) or log-encoded LUTs (ACEScct, ACEScc).
+    NONE_FOR_HDR,
+};
+
+/// A LUT format's one table entry: its names and file extension, who
+/// writes it (and the Baker's name for it), how it holds a shaper, and
+/// which hosts read it. LutFormats() lists them; nothing else switches on
+/// a format.
 struct LutFormatEntry
 {
     LutFormat format;
@@ -43,10 +69,18 @@ struct LutFormatEntry
     /// named (one per extension: .cube is the Iridas/Adobe cube).
     bool ownsExtension;
     const char* what;  ///< one phrase for help and errors
+    LutWriterKind writer;
+    /// GROUP: GroupTransform::write's format name; BAKER: OCIO's Baker format name.
+    const char* ocioFormat;
+    LutShaperRule shaper;
+    const char* hosts;  ///< the hosts that read it, for docs and help
 };
 
 /// Every LUT format, in the order help lists them.
 const std::vector<LutFormatEntry>& LutFormats();
+
+/// The entry of a format.
+const LutFormatEntry& FindLutFormat(LutFormat format);
 
 /// "clf", "ctf", "cube", "spi3d", "3dl", "resolve_cube", "csp" (or "cinespace"),
 /// "houdini" (case-insensitive); throws Exception listing them otherwise.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 #include <random>
+#include <set>
 
 #include <catch2/catch.hpp>
 
@@ -230,4 +231,42 @@ TEST_CASE("LUT errors", "[luts]")
     o.forceLattice = true;
     CHECK_THROWS_WITH(WriteLut(Relight("A", "D65", "none"), true, o, "/nonexistent/dir/x.clf"),
                       Contains("/nonexistent/dir/x.clf: cannot create output file"));
+}
+
+TEST_CASE("Every LUT format's entry names a writer OpenColorIO has, its shaper rule and hosts",
+          "[luts]")
+{
+    std::set<std::string> bakerFormats, groupFormats;
+    for (int i = 0; i < OCIO::Baker::getNumFormats(); ++i)
+    {
+        bakerFormats.insert(OCIO::Baker::getFormatNameByIndex(i));
+    }
+    for (int i = 0; i < OCIO::GroupTransform::GetNumWriteFormats(); ++i)
+    {
+        groupFormats.insert(OCIO::GroupTransform::GetFormatNameByIndex(i));
+    }
+    for (const LutFormatEntry& e : LutFormats())
+    {
+        INFO(e.name);
+        CHECK(&FindLutFormat(e.format) == &e);
+        CHECK(std::string(e.hosts).size() > 3);
+        switch (e.writer)
+        {
+            case LutWriterKind::BAKER:
+                CHECK(bakerFormats.count(e.ocioFormat) == 1);
+                break;
+            case LutWriterKind::GROUP:
+                CHECK(groupFormats.count(e.ocioFormat) == 1);
+                // A group carries its own shaper; nothing else does.
+                CHECK(e.shaper == LutShaperRule::IN_FILE);
+                break;
+            case LutWriterKind::OWN_SPI3D:
+                CHECK(std::string(e.ocioFormat).empty());
+                break;
+        }
+        if (e.shaper == LutShaperRule::IN_FILE)
+        {
+            CHECK(e.writer == LutWriterKind::GROUP);
+        }
+    }
 }
