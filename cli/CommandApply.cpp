@@ -240,21 +240,13 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
     FrameSetReporter reporter;
     ReadLightGroupFile(o);
     const std::vector<std::string> given = GivenRelightOptions(cmd);
-    if (!o.request.look.empty() && !given.empty())
-    {
-        std::string names;
-        for (const std::string& n : given)
-        {
-            names += (names.empty() ? "" : ", ") + n;
-        }
-        throw ParameterError("{look} applies a look of {config} as it is: " + names +
-                             " do not apply to it (give the look, or the change of light)");
-    }
+    o.request.changeGiven = given;
+    jobs::CheckLookAlone(o.request);
     if (!o.request.matte.empty() || !o.lookInside.empty() || !o.lookOutside.empty())
     {
         const bool lights =
             std::any_of(given.begin(), given.end(),
-                        [](const std::string& n) { return n == "--from" || n == "--to"; });
+                        [](const std::string& n) { return n == "src" || n == "dst"; });
         if (!o.request.look.empty() || !o.lightGroups.empty() || !o.lightGroupFile.empty() ||
             lights)
         {
@@ -286,7 +278,7 @@ void RunApply(ApplyOptions& o, const CLI::App& cmd)
             std::string names;
             for (const std::string& n : given)
             {
-                names += (names.empty() ? "" : ", ") + n;
+                names += (names.empty() ? "{" : ", {") + n + "}";
             }
             throw ParameterError(
                 "{look_inside} and {look_outside} are looks of {config}, "

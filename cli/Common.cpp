@@ -72,13 +72,16 @@ void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required)
 std::vector<std::string> GivenRelightOptions(const CLI::App& app)
 {
     std::vector<std::string> given;
-    for (const char* name : {"--from", "--to", "--method", "--working-space", "--plates",
-                             "--adaptation", "--camera", "--camera-idt"})
+    const std::pair<const char*, const char*> options[] = {
+        {"--from", "src"},           {"--to", "dst"},       {"--method", "method"},
+        {"--working-space", "working_space"}, {"--plates", "plates"}, {"--adaptation", "adaptation"},
+        {"--camera", "camera"},      {"--camera-idt", "camera_idt"}};
+    for (const auto& [flag, parameter] : options)
     {
-        const CLI::Option* option = app.get_option_no_throw(name);
+        const CLI::Option* option = app.get_option_no_throw(flag);
         if (option && option->count() > 0)
         {
-            given.push_back(name);
+            given.push_back(parameter);
         }
     }
     return given;

@@ -70,8 +70,9 @@ struct RelightOptions
 /// Adds the options above to a command.
 void AddRelightOptions(CLI::App& app, RelightOptions& o, bool required);
 
-/// The options of AddRelightOptions that the command line gave ("--from",
-/// "--method", ...), to refuse them where they do not apply.
+/// The options of AddRelightOptions that the command line gave, by their
+/// parameter names ("src" for --from, "method", "working_space", ...), to
+/// refuse them where they do not apply (jobs::ApplyRequest::changeGiven).
 std::vector<std::string> GivenRelightOptions(const CLI::App& app);
 
 /// --frames, --skip-existing, --keep-going and --threads, as `apply` and

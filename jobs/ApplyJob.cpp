@@ -605,6 +605,23 @@ ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
 
 }  // namespace
 
+void CheckLookAlone(const ApplyRequest& r)
+{
+    if (r.look.empty() || (r.changeGiven.empty() && !r.relight))
+    {
+        return;
+    }
+    std::string names;
+    for (const std::string& n : r.changeGiven)
+    {
+        names += (names.empty() ? "{" : ", {") + n + "}";
+    }
+    throw ParameterError("{look} applies a look of {config} as it is: " +
+                         (names.empty() ? std::string("{src}, {dst}, {method} and the plates")
+                                        : names) +
+                         " do not apply to it (give the look, or the change of light)");
+}
+
 ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
 {
     if (r.threads < 0 || r.threads > kMaxThreads)
@@ -618,13 +635,7 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
             "{look} applies one look to the whole image: {light_group} does not "
             "apply to it (give the change of light per group)");
     }
-    if (!r.look.empty() && r.relight)
-    {
-        throw ParameterError(
-            "{look} applies a look of {config} as it is: {src}, {dst}, {method} "
-            "and the plates do not apply to it (give the look, or the change "
-            "of light)");
-    }
+    CheckLookAlone(r);
     if (r.look.empty() && !r.config.empty() && r.matte.empty() && r.insideLook.empty() &&
         r.outsideLook.empty())
     {

@@ -59,6 +59,12 @@ struct ApplyRequest
     std::string outsideLook;
     /// Groups the file names otherwise: group → layer prefix, or "r,g,b".
     std::map<std::string, std::string> lightGroupLayers;
+    /// The parameters of a change of light the caller was given, by their
+    /// ParameterError names ("src", "method", "working_space", ...), in the
+    /// order a face lists them: with a look, each is refused by name
+    /// (CheckLookAlone), whichever face collected them. A face fills it;
+    /// a C++ host may leave it empty and set `relight` instead.
+    std::vector<std::string> changeGiven;
     int threads = 0;  ///< 0: all cores
     /// Frames whose output exists are skipped (outputs are written
     /// atomically, so an existing file is a complete one): a re-queued
@@ -80,6 +86,13 @@ struct ApplyResult
     bool native = false;
     bool sequence = false;
 };
+
+/// The rule every face shares: a look is applied as its config holds it, so
+/// with `look` nothing of a change of light may be given (`changeGiven`,
+/// `relight`). Throws ParameterError naming what was given; ApplyImages
+/// calls it, and a face may call it first to report this mistake before
+/// others.
+void CheckLookAlone(const ApplyRequest& request);
 
 /// Applies `request`: every output is complete or absent (written to a
 /// temporary file, then renamed); alpha and other channels pass through.

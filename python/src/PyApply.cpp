@@ -44,43 +44,39 @@ jobs::ApplyRequest FilesRequest(const py::object& input, const py::object& outpu
     return r;
 }
 
+/// The keywords of a change of light that were given (not None), by name.
+struct Given
+{
+    bool method, working, plates, adaptation, cameraIdt;
+};
+
 /// Refuses keywords that contradict each other: src without dst, or a
-/// change of light beside a look.
-void RefuseConflicts(const jobs::ApplyRequest& r, const ChangeArgs& change, bool platesGiven,
+/// change of light beside a look (jobs::CheckLookAlone, as the command).
+void RefuseConflicts(jobs::ApplyRequest& r, const ChangeArgs& change, const Given& given,
                      const py::object& lightGroups)
 {
     if (change.src.is_none() != change.dst.is_none())
     {
         throw ParameterError("give both {src} and {dst}, or a {look}");
     }
-    if (!r.look.empty())
+    const auto add = [&](bool on, const char* name)
     {
-        // A look is applied as its config holds it: the keywords of a change
-        // of light would be ignored, so they are refused by name.
-        std::string given;
-        const auto add = [&](bool on, const char* name)
+        if (on)
         {
-            if (on)
-            {
-                given += std::string(given.empty() ? "" : ", ") + name;
-            }
-        };
-        add(!change.src.is_none(), "src");
-        add(!change.dst.is_none(), "dst");
-        add(change.method != defaults::METHOD, "method");
-        add(change.working != defaults::WORKING_SPACE, "working_space");
-        add(!change.training.is_none(), "training");
-        add(platesGiven, "plates");
-        add(!lightGroups.is_none(), "light_groups");
-        add(change.plates.adaptation != defaults::ADAPTATION, "adaptation");
-        add(!change.plates.camera.is_none(), "camera");
-        add(change.plates.cameraIdt != defaults::IDT_LIGHT, "camera_idt");
-        if (!given.empty())
-        {
-            throw ParameterError("{look} applies a look of {config} as it is: " + given +
-                                 " do not apply to it (give the look, or the change of light)");
+            r.changeGiven.push_back(name);
         }
-    }
+    };
+    add(!change.src.is_none(), "src");
+    add(!change.dst.is_none(), "dst");
+    add(given.method, "method");
+    add(given.working, "working_space");
+    add(!change.training.is_none(), "training");
+    add(given.plates, "plates");
+    add(!lightGroups.is_none(), "light_groups");
+    add(given.adaptation, "adaptation");
+    add(!change.plates.camera.is_none(), "camera");
+    add(given.cameraIdt, "camera_idt");
+    jobs::CheckLookAlone(r);
 }
 
 /// light_group_layers: {group: layer} (None: none).
@@ -180,10 +176,12 @@ py::dict ResultDict(const jobs::ApplyResult& result)
 py::dict Apply(const py::object& input, const py::object& output,
                const std::optional<std::string>& frames, const std::optional<std::string>& look,
                const py::object& config, const std::optional<std::string>& colorspace,
-               const py::object& src, const py::object& dst, const std::string& method,
-               const std::string& working, const py::object& observer, const py::object& training,
-               const std::optional<std::string>& platesArg, const std::string& adaptation,
-               const py::object& camera, const std::string& cameraIdt, int threads,
+               const py::object& src, const py::object& dst,
+               const std::optional<std::string>& method,
+               const std::optional<std::string>& working, const py::object& observer,
+               const py::object& training, const std::optional<std::string>& platesArg,
+               const std::optional<std::string>& adaptation, const py::object& camera,
+               const std::optional<std::string>& cameraIdt, int threads,
                bool skipExisting, bool keepGoing, const py::object& lightGroups,
                const py::object& lightGroupLayers)
 {
@@ -192,9 +190,15 @@ py::dict Apply(const py::object& input, const py::object& output,
         platesArg.value_or(lightGroups.is_none() ? defaults::PLATES : defaults::LIGHT_GROUP_PLATES);
     jobs::ApplyRequest r = FilesRequest(input, output, frames, look, config, colorspace, threads,
                                         skipExisting, keepGoing);
-    const PlatesArgs platesArgs{plates, adaptation, camera, cameraIdt};
-    const ChangeArgs change{src, dst, method, working, observer, training, platesArgs};
-    RefuseConflicts(r, change, platesArg.has_value(), lightGroups);
+    // Not given (None): the defaults table's value, and nothing to refuse.
+    const PlatesArgs platesArgs{plates, adaptation.value_or(defaults::ADAPTATION), camera,
+                                cameraIdt.value_or(defaults::IDT_LIGHT)};
+    const ChangeArgs change{src,      dst,     method.value_or(defaults::METHOD),
+                            working.value_or(defaults::WORKING_SPACE),
+                            observer, training, platesArgs};
+    const Given given{method.has_value(), working.has_value(), platesArg.has_value(),
+                      adaptation.has_value(), cameraIdt.has_value()};
+    RefuseConflicts(r, change, given, lightGroups);
     r.lightGroupLayers = ToLightGroupLayers(lightGroupLayers);
     if (r.look.empty() && !lightGroups.is_none())
     {
@@ -220,10 +224,10 @@ The frames a frame set names, as ``--frames`` reads it: "1001-1100",
           py::arg("frames") = py::none(), py::arg("look") = py::none(),
           py::arg("config") = py::none(), py::arg("colorspace") = py::none(),
           py::arg("src") = py::none(), py::arg("dst") = py::none(),
-          py::arg("method") = defaults::METHOD, py::arg("working_space") = defaults::WORKING_SPACE,
+          py::arg("method") = py::none(), py::arg("working_space") = py::none(),
           py::arg("observer") = defaults::OBSERVER, py::arg("training") = py::none(),
-          py::arg("plates") = py::none(), py::arg("adaptation") = defaults::ADAPTATION,
-          py::arg("camera") = py::none(), py::arg("camera_idt") = defaults::IDT_LIGHT,
+          py::arg("plates") = py::none(), py::arg("adaptation") = py::none(),
+          py::arg("camera") = py::none(), py::arg("camera_idt") = py::none(),
           py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false,
           py::arg("keep_going") = false, py::arg("light_groups") = py::none(),
           py::arg("light_group_layers") = py::none(),

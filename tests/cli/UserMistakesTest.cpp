@@ -621,3 +621,18 @@ TEST_CASE("idt: bad cameras, lights, charts and options are one line, exit 2, no
     CHECK(!fs::exists(dir + "/cfg"));
     CHECK(!fs::exists(dir + "/o"));
 }
+
+TEST_CASE("apply --look with the options of a change of light names each, as Python does",
+          "[cli][mistakes]")
+{
+    const std::string dir = Folder("look_with_change");
+    REQUIRE(Bandlight("config --out '" + dir + "/config' --illuminants A,D65 --methods bradford")
+                .code == 0);
+    // --method at its default value is still given, and still does not apply.
+    const Result r = Bandlight("apply '" + dir + "/in.exr' '" + dir +
+                               "/out.exr' --look bradford_A_to_D65 --config '" + dir +
+                               "/config' --from A --method bradford --working-space acescg");
+    CheckOneLine(r, "--look applies a look of --config as it is: --from, --method, "
+                    "--working-space do not apply to it (give the look, or the change of light)");
+    CHECK_FALSE(fs::exists(dir + "/out.exr"));
+}

@@ -21,6 +21,26 @@ def test_a_look_with_the_keywords_of_a_change_of_light_is_refused(tmp_path):
     assert not (tmp_path / "out.exr").exists()
 
 
+@pytest.mark.parametrize("keyword, value", [("method", "bradford"), ("working_space", "acescg"),
+                                            ("adaptation", "cat02"), ("camera_idt", "D55")])
+def test_a_look_with_a_keyword_given_at_its_default_value_is_refused(tmp_path, keyword, value):
+    # Given is given: the default's own value beside a look is as ignored as
+    # any other, so it is refused in the command's words (--method there).
+    write_plate(tmp_path / "plate.exr")
+    config = tmp_path / "config"
+    bandlight.config(config, illuminants="A,D65", methods=["bradford"])
+    with pytest.raises(ValueError) as e:
+        bandlight.apply(tmp_path / "plate.exr", tmp_path / "out.exr",
+                        look="bradford_A_to_D65", config=config, **{keyword: value})
+    assert str(e.value) == (f"look applies a look of config as it is: {keyword} do not apply "
+                            "to it (give the look, or the change of light)")
+    assert not (tmp_path / "out.exr").exists()
+    # Not given: the look applies.
+    bandlight.apply(tmp_path / "plate.exr", tmp_path / "out.exr", look="bradford_A_to_D65",
+                    config=config)
+    assert (tmp_path / "out.exr").exists()
+
+
 def test_an_empty_output_folder_is_refused(tmp_path):
     os.chdir(tmp_path)
     with pytest.raises(ValueError, match=r"an empty path"):
