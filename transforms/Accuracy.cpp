@@ -250,7 +250,7 @@ struct Run
     /// upsample's fits under each source light, held for the whole run:
     /// every target light, plate convention and form (ideal, and the
     /// shipped lattice's nodes) shares them.
-    std::vector<std::shared_ptr<UpsampleFits>> upsampleFits;
+    std::vector<std::shared_ptr<void>> sharedPerLight;
     Spectrum daylight;  ///< the light of the camera's daylight IDT (empty: no camera)
 };
 
@@ -278,21 +278,28 @@ SampledSets SampleSets(const std::vector<ReflectanceSet>& sets)
     return samples;
 }
 
-std::vector<std::shared_ptr<UpsampleFits>> HoldUpsampleFits(const Run& run)
+/// What the run's methods' ops share per source light (upsample's fits),
+/// held for the whole run: each entry's share once per light.
+std::vector<std::shared_ptr<void>> HoldSharedPerLight(const Run& run)
 {
-    std::vector<std::shared_ptr<UpsampleFits>> fits;
-    if (std::none_of(run.methods.begin(), run.methods.end(),
-                     [](const MethodSpec& m)
-                     { return m.entry().kernel == MethodKernel::UPSAMPLE; }))
+    std::vector<std::shared_ptr<void>> held;
+    std::vector<SharedPerLight> makers;
+    for (const MethodSpec& m : run.methods)
     {
-        return fits;
+        const SharedPerLight make = m.entry().sharedPerLight;
+        if (make && std::find(makers.begin(), makers.end(), make) == makers.end())
+        {
+            makers.push_back(make);
+        }
     }
-    for (const Light& light : run.options.lights)
+    for (const SharedPerLight make : makers)
     {
-        fits.push_back(UpsampleFits::ForSource(
-            SurfaceRenderer(light.spectrum, run.working, run.options.observer)));
+        for (const Light& light : run.options.lights)
+        {
+            held.push_back(make(light, run.working, run.options.observer));
+        }
     }
-    return fits;
+    return held;
 }
 
 Spectrum IdtDaylight(const AccuracyOptions& o)
@@ -628,7 +635,7 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
     // (and the camera they need), the remittances, upsample's fits, the
     // daylight IDT's light.
     Run run{o, FindRgbSpace(o.workingSpace), ParseMethods(o), SampleSets(o.sets), {}, {}};
-    run.upsampleFits = HoldUpsampleFits(run);
+    run.sharedPerLight = HoldSharedPerLight(run);
     run.daylight = IdtDaylight(o);
     return ForEachPair(o, progress,
                        [&run](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)

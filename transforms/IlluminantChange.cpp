@@ -22,6 +22,7 @@
 #include "transforms/SpectralMethods.h"
 #include "transforms/Upsampler.h"
 #include "transforms/detail/MethodFits.h"
+#include "transforms/methods/PixelOp.h"
 
 #include <thread>
 
@@ -211,25 +212,17 @@ Mat3 IlluminantChangeMatrix(const Light& from, const Light& to, const MethodSpec
            BalanceMatrix(from.spectrum, working, a, observer).inverse();
 }
 
-struct Relighter::Spectral
-{
-    SurfaceRenderer from;
-    SurfaceRenderer to;
-    Upsampler upsampler;
-    /// The fits under `from`, shared with every Relighter from that light.
-    std::shared_ptr<UpsampleFits> fits;
-
-    Spectral(const SurfaceRenderer& f, const SurfaceRenderer& t)
-        : from(f), to(t), upsampler(from), fits(UpsampleFits::ForSource(from))
-    {
-    }
-};
-
 Relighter::Relighter(const Light& from, const Light& to, const MethodSpec& method,
                      const RgbSpace& working, Observer observer)
 {
     build(from, to, method, working, observer);
-    prepareKernels();
+    for (int r = 0; r < 3; ++r)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            m_matrixF.m[3 * r + c] = float(m_matrix(r, c));
+        }
+    }
 }
 
 void Relighter::build(const Light& from, const Light& to, const MethodSpec& method,
@@ -248,35 +241,12 @@ void Relighter::build(const Light& from, const Light& to, const MethodSpec& meth
         m_matrix = IlluminantChangeMatrix(from, to, method, working, observer);
         return;
     }
-    m_linear = false;
-    PixelForm form = entry.pixelForm(from, to, method, working, observer);
-    m_hasPre = form.hasPre;
-    m_pre = form.pre;
-    m_hasPost = form.hasPost;
-    m_post = form.post;
-    m_rootpoly = std::move(form.rootpoly);
-    if (entry.kernel == MethodKernel::UPSAMPLE)
-    {
-        m_matrix = form.fallback;
-        m_spectral = std::make_unique<Spectral>(SurfaceRenderer(from.spectrum, working, observer),
-                                                SurfaceRenderer(to.spectrum, working, observer));
-    }
+    m_op = entry.makeOp(from, to, method, working, observer);
+    m_matrix = m_op->linearPart();
 }
 
 namespace detail
 {
-
-namespace
-{
-/// The balances of balanced plates around a non-linear method: the inverse
-/// balance for `from` before it, the balance for `to` after it (identities
-/// for lit plates).
-struct PlateBalance
-{
-    bool balanced;
-    Mat3 from = Mat3::Identity();
-    Mat3 to = Mat3::Identity();
-};
 
 PlateBalance BalanceOf(const Light& from, const Light& to, const MethodSpec& method,
                        const RgbSpace& working, Observer observer)
@@ -288,78 +258,6 @@ PlateBalance BalanceOf(const Light& from, const Light& to, const MethodSpec& met
         b.to = BalanceMatrix(to.spectrum, working, method.plates.adaptation, observer);
     }
     return b;
-}
-}  // namespace
-
-PixelForm UpsampleForm(const Light& from, const Light& to, const MethodSpec& method,
-                       const RgbSpace& working, Observer observer)
-{
-    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
-    PixelForm form;
-    form.hasPre = balance.balanced;
-    form.pre = balance.from.inverse();
-    form.hasPost = balance.balanced;
-    form.post = balance.to;
-    form.fallback = MetamerMatrix(SurfaceRenderer(from.spectrum, working, observer),
-                                  SurfaceRenderer(to.spectrum, working, observer));
-    return form;
-}
-
-PixelForm RootPolyForm(const Light& from, const Light& to, const MethodSpec& method,
-                       const RgbSpace& working, Observer observer)
-{
-    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
-    const SurfaceRenderer r1(from.spectrum, working, observer);
-    const SurfaceRenderer r2(to.spectrum, working, observer);
-    PixelForm form;
-    form.hasPre = balance.balanced;
-    form.pre = balance.from.inverse();
-    const RootPolynomial lit = FitRootPolynomial(r1, r2, TrainingOf(method), method.degree);
-    form.rootpoly = std::make_unique<RootPolynomial>(method.degree, balance.to * lit.matrix());
-    return form;
-}
-
-PixelForm RootPolyCameraForm(const Light& from, const Light& to, const MethodSpec& method,
-                             const RgbSpace& working, Observer observer)
-{
-    RequireCamera(method);
-    const PlateBalance balance = BalanceOf(from, to, method, working, observer);
-    const AdaptationMethod adaptation = method.plates.adaptation;
-    const SurfaceRenderer r2(to.spectrum, working, observer);
-    // The plates: camera RGB balanced for `from` by gains, through one IDT
-    // fitted for the daylight. Back through that IDT to the camera's
-    // balanced record, then to the colour under `from` as the camera's own
-    // IDT for `from` sees it (for the observer as camera, exactly the plain
-    // path's input); the root polynomial, fitted from those records to the
-    // truth under `to`, corrects the rest.
-    const Spectrum daylight =
-        method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
-    const SpectralCamera& camera = *method.camera;
-    const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
-    const Mat3 cameraLit = BalanceMatrix(from.spectrum, working, adaptation, observer).inverse() *
-                           FitIdt(camera, from.spectrum, working, adaptation, observer);
-    const CameraShot shot(camera, from.spectrum);
-    ColourFit fit;
-    for (const NamedSpectrum& t : TrainingOf(method))
-    {
-        const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
-        fit.input.push_back(cameraLit * shot.record(r));
-        fit.target.push_back(r2.render(r));
-    }
-    fit.whiteIn = cameraLit * Vec3::Ones();
-    fit.whiteOut = r2.white();
-    fit.rgbToXyz = r2.rgbToXyz();
-    fit.labWhite = r2.rgbToXyz() * r2.white();
-    const RootPolynomial lit = FitRootPolynomial(fit, method.degree);
-    PixelForm form;
-    form.rootpoly = std::make_unique<RootPolynomial>(method.degree, balance.to * lit.matrix());
-    // Lit plates are the balanced ones with the cast put back.
-    const Mat3 plateToBalanced =
-        balance.balanced ? Mat3::Identity()
-                         : BalanceMatrix(from.spectrum, working, adaptation, observer);
-    form.pre = cameraLit * idtDaylight.inverse() * plateToBalanced;
-    form.hasPre = true;
-    return form;
 }
 
 }  // namespace detail
@@ -398,29 +296,29 @@ Vec3 GuardPixel(const Vec3& rgb) noexcept
     return out;
 }
 
-Vec3 Relighter::core(const Vec3& in) const
+const RootPolynomial* Relighter::rootPolynomial() const noexcept
 {
-    if (m_rootpoly)
-    {
-        return m_rootpoly->apply(in);
-    }
-    if (m_linear)
-    {
-        return m_matrix * in;
-    }
-    const Vec3 out = UpsampleRelight(m_spectral->upsampler, m_spectral->to, m_matrix, in);
-    return m_hasPost ? Vec3(m_post * out) : out;
+    return m_op ? m_op->rootPolynomial() : nullptr;
+}
+
+const Mat3* Relighter::inputMatrix() const noexcept
+{
+    return m_op && m_op->hasInput ? &m_op->input : nullptr;
 }
 
 Vec3 Relighter::apply(const Vec3& rgb) const
 {
     const Vec3 in = GuardPixel(rgb);
-    return core(m_hasPre ? Vec3(m_pre * in) : in);
+    if (!m_op)
+    {
+        return m_matrix * in;
+    }
+    return m_op->apply(m_op->hasInput ? Vec3(m_op->input * in) : in);
 }
 
 void Relighter::apply(Vec3* rgb, size_t count) const
 {
-    if (!m_spectral)
+    if (!m_op)
     {
         for (size_t i = 0; i < count; ++i)
         {
@@ -428,33 +326,12 @@ void Relighter::apply(Vec3* rgb, size_t count) const
         }
         return;
     }
-    UpsampleRendered rendered;
     for (size_t i = 0; i < count; ++i)
     {
         const Vec3 guarded = GuardPixel(rgb[i]);
-        const Vec3 in = m_hasPre ? Vec3(m_pre * guarded) : guarded;
-        const Vec3 out = UpsampleRelight(*m_spectral->fits, m_spectral->to, m_matrix, in, rendered);
-        rgb[i] = m_hasPost ? Vec3(m_post * out) : out;
+        rgb[i] = m_op->hasInput ? Vec3(m_op->input * guarded) : guarded;
     }
-}
-
-void Relighter::prepareKernels()
-{
-    for (int r = 0; r < 3; ++r)
-    {
-        for (int c = 0; c < 3; ++c)
-        {
-            m_matrixF.m[3 * r + c] = float(m_matrix(r, c));
-            m_rootpolyKernel.input.m[3 * r + c] = float(m_pre(r, c));
-        }
-    }
-    m_rootpolyKernel.hasInput = m_hasPre;
-    if (m_rootpoly)
-    {
-        m_rootpolyKernel.degree = m_rootpoly->degree();
-        std::memcpy(m_rootpolyKernel.coefficients, m_rootpoly->floats(),
-                    sizeof m_rootpolyKernel.coefficients);
-    }
+    m_op->apply(rgb, count);
 }
 
 void Relighter::apply(float* rgb, size_t count, int threads) const
@@ -469,7 +346,7 @@ void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) c
         throw Exception("Relighter: pixels of " + std::to_string(stride) +
                         " channels (at least R, G, B)");
     }
-    if (m_linear)
+    if (!m_op)
     {
         // The guarded 3×3: bound by memory, so threads only for big buffers.
         ParallelFor(count, count < 65536 ? 1 : threads,
@@ -477,17 +354,13 @@ void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) c
                     { GuardedMatrix(m_matrixF, pixels + begin * stride, end - begin, stride); });
         return;
     }
-    if (m_rootpoly)
+    if (m_op->applyWhole(pixels, count, stride, threads))
     {
-        ParallelFor(
-            count, count < 65536 ? 1 : threads,
-            [&](size_t begin, size_t end)
-            { RootPolyPixels(m_rootpolyKernel, pixels + begin * stride, end - begin, stride); });
         return;
     }
     if (stride != 3)
     {
-        // upsample works on packed triples: gather, relight, scatter.
+        // The op works on packed triples: gather, relight, scatter.
         ParallelFor(count, count < 1024 ? 1 : threads,
                     [&](size_t begin, size_t end)
                     {
@@ -506,7 +379,7 @@ void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) c
     }
     float* rgb = pixels;
     // The guard (written so NaN goes to the lower bound: (-G < NaN) is
-    // false, and the loop vectorises), the input matrix, then the method.
+    // false, and the loop vectorises), the input matrix, then the op.
     ParallelFor(count, count < 1024 ? 1 : threads,
                 [&](size_t begin, size_t end)
                 {
@@ -516,52 +389,32 @@ void Relighter::apply(float* pixels, size_t count, size_t stride, int threads) c
                         const float v = lo < rgb[i] ? rgb[i] : lo;
                         rgb[i] = hi < v ? hi : v;
                     }
-                    if (m_hasPre)
+                    if (m_op->hasInput)
                     {
-                        const Eigen::Matrix3f pre = m_pre.cast<float>();
+                        const Eigen::Matrix3f pre = m_op->input.cast<float>();
                         for (size_t i = begin; i < end; ++i)
                         {
                             Eigen::Map<Eigen::Vector3f> p(rgb + 3 * i);
                             p = pre * Eigen::Vector3f(p);
                         }
                     }
-                    applyAfterInput(rgb + 3 * begin, end - begin, 1);
+                    m_op->applyAfterInput(rgb + 3 * begin, end - begin, 1);
                 });
 }
 
 void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
 {
-    if (m_rootpoly)
+    if (m_op)
     {
-        // A few ns a pixel: the vectorised root polynomial.
-        ParallelFor(count, count < 65536 ? 1 : threads,
-                    [&](size_t begin, size_t end)
-                    { m_rootpoly->apply(rgb + 3 * begin, end - begin); });
+        m_op->applyAfterInput(rgb, count, threads);
         return;
     }
     auto run = [&](size_t begin, size_t end)
     {
-        // Fits are shared (per chromaticity, across targets and threads)
-        // and start from the flat grey: a pixel's result depends on nothing
-        // but the pixel.
-        UpsampleRendered rendered;
         for (size_t i = begin; i < end; ++i)
         {
             float* p = rgb + 3 * i;
-            const Vec3 in = GuardPixel(Vec3(p[0], p[1], p[2]));
-            Vec3 out;
-            if (m_linear)
-            {
-                out = m_matrix * in;
-            }
-            else
-            {
-                out = UpsampleRelight(*m_spectral->fits, m_spectral->to, m_matrix, in, rendered);
-                if (m_hasPost)
-                {
-                    out = m_post * out;
-                }
-            }
+            const Vec3 out = m_matrix * GuardPixel(Vec3(p[0], p[1], p[2]));
             p[0] = float(out.x());
             p[1] = float(out.y());
             p[2] = float(out.z());
@@ -569,6 +422,19 @@ void Relighter::applyAfterInput(float* rgb, size_t count, int threads) const
     };
     // Below 1024 pixels a thread costs more than it saves.
     ParallelFor(count, count < 1024 ? 1 : threads, run);
+}
+
+void PixelOp::apply(Vec3* rgb, size_t count) const
+{
+    for (size_t i = 0; i < count; ++i)
+    {
+        rgb[i] = apply(rgb[i]);
+    }
+}
+
+bool PixelOp::applyWhole(float*, size_t, size_t, int) const
+{
+    return false;
 }
 
 }  // namespace bandlight

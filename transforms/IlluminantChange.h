@@ -47,8 +47,11 @@ constexpr double PIXEL_GUARD = 1e16;
 /// to −PIXEL_GUARD.
 Vec3 GuardPixel(const Vec3& rgb) noexcept;
 
+class PixelOp;
+
 /// An illuminant change ready to apply to pixels: a 3×3 for the linear
-/// methods, the per-pixel spectral fit for upsample.
+/// methods, else the op its method makes (transforms/methods/PixelOp.h)
+/// behind the pixel guard and the op's input matrix.
 class Relighter
 {
 public:
@@ -58,13 +61,14 @@ public:
     ~Relighter();
     Relighter(Relighter&&) noexcept;
 
-    bool isLinear() const noexcept { return m_linear; }
-    /// The 3×3 of a linear method; for upsample, the linear fallback used
-    /// for pixels with no positive channel (the metamer matrix).
+    bool isLinear() const noexcept { return !m_op; }
+    /// The 3×3 of a linear method; for a non-linear one the 3×3 its op
+    /// stands for (PixelOp::linearPart: upsample's fallback for pixels with
+    /// no positive channel, the metamer matrix).
     const Mat3& matrix() const noexcept { return m_matrix; }
     /// rootpoly's fitted map (nullptr for other methods); for balanced
     /// plates it includes the balance for `to`.
-    const RootPolynomial* rootPolynomial() const noexcept { return m_rootpoly.get(); }
+    const RootPolynomial* rootPolynomial() const noexcept;
 
     /// One pixel, working RGB under `from` → as if under `to`; any input,
     /// NaN and Inf included, gives a finite result (see PIXEL_GUARD).
@@ -87,28 +91,18 @@ public:
     /// The 3×3 a non-linear method applies to the guarded pixel before its
     /// own work (balanced plates: the inverse balance for `from`;
     /// rootpoly-camera: the way back to the camera's record), or nullptr.
-    const Mat3* inputMatrix() const noexcept { return m_hasPre ? &m_pre : nullptr; }
+    const Mat3* inputMatrix() const noexcept;
     /// apply() without the guard and inputMatrix().
     void applyAfterInput(float* rgb, size_t count, int threads = 0) const;
 
 private:
-    struct Spectral;
-    Vec3 core(const Vec3& in) const;
-    bool m_linear = true;
-    bool m_hasPre = false;
-    bool m_hasPost = false;
-    Mat3 m_pre = Mat3::Identity();
-    Mat3 m_post = Mat3::Identity();
     Mat3 m_matrix = Mat3::Identity();
-    std::unique_ptr<Spectral> m_spectral;
-    std::unique_ptr<RootPolynomial> m_rootpoly;
-    /// The kernels' forms of the 3×3 and of the root polynomial (with the
-    /// input matrix folded in as the kernel's input step).
+    /// The kernel's form of the 3×3.
     Matrix3f m_matrixF{};
-    RootPolyKernelData m_rootpolyKernel;
+    /// Non-linear methods: their op (nullptr: the method is m_matrix).
+    std::unique_ptr<PixelOp> m_op;
     void build(const Light& from, const Light& to, const MethodSpec& method,
                const RgbSpace& working, Observer observer);
-    void prepareKernels();
 };
 
 /// The description of the look `method` makes from `from` to `to`: the

@@ -13,6 +13,11 @@
 namespace bandlight
 {
 
+// The entries of the methods in files of their own (transforms/methods/List.h).
+#define BANDLIGHT_METHOD(KEY, MAKE) MethodEntry MAKE();
+#include "transforms/methods/List.h"
+#undef BANDLIGHT_METHOD
+
 namespace
 {
 
@@ -124,16 +129,16 @@ std::string DescribeBand(const MethodSpec& m)
 
 #define BANDLIGHT_TEXT(TEXT) [](const MethodSpec&) -> std::string { return TEXT; }
 
-/// An entry with its name, kernel, parser and description; the rest is set
-/// field by field below.
-MethodEntry Entry(ChangeMethod method, const char* syntax, MethodKernel kernel,
+/// An entry with its name, exactness, parser and description; the rest is
+/// set field by field below.
+MethodEntry Entry(ChangeMethod method, const char* syntax, MethodExactness exactness,
                   bool (*parse)(const std::string&, MethodSpec&),
                   std::string (*describe)(const MethodSpec&))
 {
     MethodEntry e;
     e.methods = {method};
     e.syntax = syntax;
-    e.kernel = kernel;
+    e.exactness = exactness;
     e.parse = parse;
     e.describe = describe;
     return e;
@@ -166,9 +171,9 @@ std::string DescribeRootPolyCamera(const MethodSpec& m)
 /// the fitted matrices.
 void AddMatrixMethods(std::vector<MethodEntry>& all)
 {
-    using K = MethodKernel;
+    using K = MethodExactness;
 
-    MethodEntry none = Entry(ChangeMethod::NONE, "none", K::MATRIX, BANDLIGHT_EXACT(NONE, "none"),
+    MethodEntry none = Entry(ChangeMethod::NONE, "none", K::LINEAR, BANDLIGHT_EXACT(NONE, "none"),
                              BANDLIGHT_TEXT("Identity: the image is left as it is (the baseline "
                                             "every method is compared with)."));
     none.litMatrix = &detail::IdentityFit;
@@ -178,7 +183,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(none);
 
     MethodEntry vonKries =
-        Entry(ChangeMethod::VON_KRIES, "vonkries", K::MATRIX, BANDLIGHT_EXACT(VON_KRIES, "vonkries"),
+        Entry(ChangeMethod::VON_KRIES, "vonkries", K::LINEAR, BANDLIGHT_EXACT(VON_KRIES, "vonkries"),
               BANDLIGHT_TEXT("von Kries scaling of XYZ by the ratio of the two white points: "
                              "exact on white, the crudest chromatic adaptation for colours."));
     vonKries.litMatrix = &detail::AdaptationFit;
@@ -188,7 +193,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(vonKries);
 
     MethodEntry bradford =
-        Entry(ChangeMethod::BRADFORD, "bradford", K::MATRIX, BANDLIGHT_EXACT(BRADFORD, "bradford"),
+        Entry(ChangeMethod::BRADFORD, "bradford", K::LINEAR, BANDLIGHT_EXACT(BRADFORD, "bradford"),
               BANDLIGHT_TEXT("Bradford chromatic adaptation (linearised): exact on white; the "
                              "usual white-balance matrix, good for broadband lights."));
     bradford.litMatrix = &detail::AdaptationFit;
@@ -198,7 +203,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(bradford);
 
     MethodEntry cat02 =
-        Entry(ChangeMethod::CAT02, "cat02", K::MATRIX, BANDLIGHT_EXACT(CAT02, "cat02"),
+        Entry(ChangeMethod::CAT02, "cat02", K::LINEAR, BANDLIGHT_EXACT(CAT02, "cat02"),
               BANDLIGHT_TEXT("CAT02 chromatic adaptation (CIECAM02): exact on white; similar to "
                              "Bradford."));
     cat02.litMatrix = &detail::AdaptationFit;
@@ -208,7 +213,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(cat02);
 
     MethodEntry band = Entry(ChangeMethod::BAND,
-                             "band3, band3-wp, bandN, bandN-wp, bandsE0-E1-...-En[-wp]", K::MATRIX,
+                             "band3, band3-wp, bandN, bandN-wp, bandsE0-E1-...-En[-wp]", K::LINEAR,
                              &ParseBand, &DescribeBand);
     band.methods.push_back(ChangeMethod::BAND_WP);
     band.litMatrix = &detail::BandFit;
@@ -218,7 +223,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(band);
 
     MethodEntry fit3x3 =
-        Entry(ChangeMethod::FIT3X3, "fit3x3", K::MATRIX, BANDLIGHT_EXACT(FIT3X3, "fit3x3"),
+        Entry(ChangeMethod::FIT3X3, "fit3x3", K::LINEAR, BANDLIGHT_EXACT(FIT3X3, "fit3x3"),
               BANDLIGHT_TEXT("3x3 fitted by least squares on training remittances (TCS01-08 and "
                              "100 smooth random ones), exact on white."));
     fit3x3.litMatrix = &detail::LeastSquaresFit;
@@ -228,7 +233,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(fit3x3);
 
     MethodEntry prefilter =
-        Entry(ChangeMethod::PREFILTER, "prefilter", K::MATRIX,
+        Entry(ChangeMethod::PREFILTER, "prefilter", K::LINEAR,
               BANDLIGHT_EXACT(PREFILTER, "prefilter"),
               BANDLIGHT_TEXT("von Kries in the sharpened primaries of spectral prefiltering (Ward "
                              "& Eydelberg-Vileshin 2002, Sharp sensors): exact on white."));
@@ -238,7 +243,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     all.push_back(prefilter);
 
     MethodEntry metamer =
-        Entry(ChangeMethod::METAMER, "metamer", K::MATRIX, BANDLIGHT_EXACT(METAMER, "metamer"),
+        Entry(ChangeMethod::METAMER, "metamer", K::LINEAR, BANDLIGHT_EXACT(METAMER, "metamer"),
               BANDLIGHT_TEXT("The smoothest remittance that reproduces the pixel under the first "
                              "light, re-lit under the second: one 3x3, exact on white."));
     metamer.litMatrix = &detail::MetamerFit;
@@ -249,24 +254,26 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
 /// The methods that are not one 3×3, and the spectral reference.
 void AddPixelMethods(std::vector<MethodEntry>& all)
 {
-    using K = MethodKernel;
+    using K = MethodExactness;
 
     MethodEntry upsample =
-        Entry(ChangeMethod::UPSAMPLE, "upsample", K::UPSAMPLE, BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
+        Entry(ChangeMethod::UPSAMPLE, "upsample", K::NONLINEAR, BANDLIGHT_EXACT(UPSAMPLE, "upsample"),
               BANDLIGHT_TEXT("A smooth remittance in [0, 1] fitted to the pixel (Jakob & Hanika "
                              "2019 sigmoid polynomial), re-lit spectrally: not linear, baked into "
                              "a 3D LUT with a log2 shaper."));
-    upsample.pixelForm = &detail::UpsampleForm;
+    upsample.makeOp = &detail::UpsampleOp;
+    upsample.sharedPerLight = &detail::UpsampleShared;
     upsample.directForm = DirectForm::DIRECT_FIT;
     upsample.accuracyDefaults = {"upsample"};
     all.push_back(upsample);
 
     MethodEntry rootpoly = Entry(
-        ChangeMethod::ROOTPOLY, "rootpoly, rootpoly3", K::ROOTPOLY,
+        ChangeMethod::ROOTPOLY, "rootpoly, rootpoly3", K::NONLINEAR,
         [](const std::string& n, MethodSpec& s)
         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY, ""); },
         &DescribeRootPoly);
-    rootpoly.pixelForm = &detail::RootPolyForm;
+    rootpoly.makeOp = &detail::RootPolyOp;
+    rootpoly.native = true;
     rootpoly.defaultTraining = &RootPolynomialTraining;
     rootpoly.takesTraining = true;
     rootpoly.directForm = DirectForm::NATIVE;
@@ -274,20 +281,27 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
     all.push_back(rootpoly);
 
     MethodEntry rootpolyCamera = Entry(
-        ChangeMethod::ROOTPOLY_CAMERA, "rootpoly-camera, rootpoly3-camera", K::ROOTPOLY,
+        ChangeMethod::ROOTPOLY_CAMERA, "rootpoly-camera, rootpoly3-camera", K::NONLINEAR,
         [](const std::string& n, MethodSpec& s)
         { return ParseRootPoly(n, s, ChangeMethod::ROOTPOLY_CAMERA, "-camera"); },
         &DescribeRootPolyCamera);
-    rootpolyCamera.pixelForm = &detail::RootPolyCameraForm;
+    rootpolyCamera.makeOp = &detail::RootPolyCameraOp;
+    rootpolyCamera.native = true;
     rootpolyCamera.defaultTraining = &RootPolynomialTraining;
     rootpolyCamera.needsCamera = true;
     rootpolyCamera.directForm = DirectForm::NATIVE;
     rootpolyCamera.cameraDefaults = {"rootpoly-camera"};
     all.push_back(rootpolyCamera);
 
-    MethodEntry spectral =
-        Entry(ChangeMethod::SPECTRAL, "spectral", K::SPECTRAL, BANDLIGHT_EXACT(SPECTRAL, "spectral"),
-              BANDLIGHT_TEXT("The exact spectral answer for known remittances: the reference."));
+}
+
+/// The exact spectral answer, last.
+void AddReference(std::vector<MethodEntry>& all)
+{
+    MethodEntry spectral = Entry(ChangeMethod::SPECTRAL, "spectral", MethodExactness::REFERENCE,
+                                 BANDLIGHT_EXACT(SPECTRAL, "spectral"),
+                                 BANDLIGHT_TEXT("The exact spectral answer for known remittances: "
+                                                "the reference."));
     all.push_back(spectral);
 }
 
@@ -296,6 +310,10 @@ std::vector<MethodEntry> MakeMethods()
     std::vector<MethodEntry> all;
     AddMatrixMethods(all);
     AddPixelMethods(all);
+#define BANDLIGHT_METHOD(KEY, MAKE) all.push_back(MAKE());
+#include "transforms/methods/List.h"
+#undef BANDLIGHT_METHOD
+    AddReference(all);
     return all;
 }
 
@@ -345,7 +363,7 @@ bool MethodSpec::isLinear() const noexcept
     {
         if (std::find(e.methods.begin(), e.methods.end(), method) != e.methods.end())
         {
-            return e.kernel == MethodKernel::MATRIX;
+            return e.exactness == MethodExactness::LINEAR;
         }
     }
     return false;
@@ -449,7 +467,7 @@ std::string MethodSyntax()
     std::string out;
     for (const MethodEntry& e : Methods())
     {
-        if (e.kernel == MethodKernel::SPECTRAL)
+        if (e.isReference())
         {
             continue;  // the reference, not an image method
         }

@@ -2,12 +2,13 @@
 #pragma once
 
 // The illuminant-change methods, one registry entry each: its name and
-// syntax, whether it is one 3×3, how it is fitted and on what, how its
-// pixels are computed, whether it needs a camera, what it costs and where it
-// appears in default lists and reports. Adding a method is one entry in
-// transforms/Methods.cpp and the function that fits it, as OpenColorIO keeps
-// an op in one folder; nothing outside the registry compares a method's
-// enum or name.
+// syntax, how exact it is (one 3×3, an op per pixel, the reference), how it
+// is fitted and on what, the op it makes for a change of light, whether it
+// needs a camera, what it costs and where it appears in default lists and
+// reports. Adding a method is one file in transforms/methods/ (its entry,
+// parser, fit and op, as OpenColorIO keeps an op in one folder) and one line
+// in transforms/methods/List.h; nothing outside the registry compares a
+// method's enum or name.
 
 #include <memory>
 #include <string>
@@ -45,6 +46,10 @@ enum class ChangeMethod
     /// fixed daylight IDT and white-balance gains
     ROOTPOLY_CAMERA,
     SPECTRAL,  ///< the exact answer for known spectra: the reference, not an image transform
+// The methods of transforms/methods/ that register themselves, one line each.
+#define BANDLIGHT_METHOD(KEY, MAKE) KEY,
+#include "transforms/methods/List.h"
+#undef BANDLIGHT_METHOD
 };
 
 struct MethodEntry;
@@ -96,7 +101,7 @@ struct MethodSpec
     const MethodEntry& entry() const;
     /// The band methods (band3, bandN, bands…, their -wp forms).
     bool usesBands() const;
-    /// One 3×3 in the working space: its registry entry's kernel is MATRIX.
+    /// One 3×3 in the working space: its registry entry is LINEAR.
     bool isLinear() const noexcept;
 };
 
@@ -107,38 +112,28 @@ struct Light
     Spectrum spectrum;
 };
 
-/// How a method's pixels are computed.
-enum class MethodKernel
+/// How exact a method's change of light is, which decides its OCIO form.
+enum class MethodExactness
 {
-    MATRIX,    ///< one 3×3 in the working space (with the pixel guard)
-    UPSAMPLE,  ///< a smooth remittance fitted per pixel, re-lit spectrally
-    ROOTPOLY,  ///< the native root polynomial (rootpoly, rootpoly-camera)
-    SPECTRAL,  ///< spectra, not pixels: the reference
+    LINEAR,     ///< one 3×3 in the working space (with the pixel guard): a MatrixTransform
+    NONLINEAR,  ///< an op per pixel (PixelOp): a 3D LUT with a shaper in OCIO
+    REFERENCE,  ///< spectra, not pixels: the exact answer the others are measured against
 };
 
-/// The pixel form of a method that is not one 3×3, as its registry entry
-/// builds it: an optional 3×3 before (balanced plates: the inverse balance
-/// for `from`; camera methods: the way back to the camera's record), the
-/// map itself, an optional 3×3 after.
-struct PixelForm
-{
-    bool hasPre = false;
-    Mat3 pre = Mat3::Identity();
-    bool hasPost = false;
-    Mat3 post = Mat3::Identity();
-    /// The root polynomial (ROOTPOLY kernels), post balance folded in.
-    std::unique_ptr<RootPolynomial> rootpoly;
-    /// UPSAMPLE kernels: the linear fallback for pixels with no positive
-    /// channel (the metamer matrix); the upsampler is built from the lights.
-    Mat3 fallback = Mat3::Identity();
-};
+class PixelOp;
 
 /// The lit 3×3 of a linear method: working RGB under `from` → under `to`.
 using LitMatrixFit = Mat3 (*)(const Light& from, const Light& to, const MethodSpec& method,
                               const RgbSpace& working, Observer observer);
-/// The pixel form of a non-linear method for the plates `method.plates`.
-using PixelFormFit = PixelForm (*)(const Light& from, const Light& to, const MethodSpec& method,
-                                   const RgbSpace& working, Observer observer);
+/// The op of a non-linear method for the plates `method.plates`
+/// (transforms/methods/PixelOp.h).
+using PixelOpFit = std::unique_ptr<PixelOp> (*)(const Light& from, const Light& to,
+                                                const MethodSpec& method, const RgbSpace& working,
+                                                Observer observer);
+/// What a method's ops share over a run for one source light (upsample's
+/// fits per chromaticity), held by a caller that makes many of them.
+using SharedPerLight = std::shared_ptr<void> (*)(const Light& from, const RgbSpace& working,
+                                                  Observer observer);
 /// A fitted method's default training remittances.
 using TrainingSetFn = const std::vector<NamedSpectrum>& (*)();
 
@@ -149,16 +144,22 @@ struct MethodEntry
     std::vector<ChangeMethod> methods;
     /// How the entry's names read in help ("bandN, bandN-wp, ...").
     const char* syntax;
-    MethodKernel kernel;
+    MethodExactness exactness;
     /// Parses a lower-case name into `spec`; false when the name is not of
     /// this entry (throws Exception when it is, but malformed).
     bool (*parse)(const std::string& name, MethodSpec& spec);
     /// One sentence on what the method does and how accurate it is.
     std::string (*describe)(const MethodSpec& spec);
-    /// MATRIX kernels: the fit (nullptr otherwise).
+    /// LINEAR methods: the fit (nullptr otherwise).
     LitMatrixFit litMatrix = nullptr;
-    /// UPSAMPLE and ROOTPOLY kernels: the builder of the pixel form.
-    PixelFormFit pixelForm = nullptr;
+    /// NONLINEAR methods: the maker of their op.
+    PixelOpFit makeOp = nullptr;
+    /// NONLINEAR methods whose ops share work per source light (nullptr: none).
+    SharedPerLight sharedPerLight = nullptr;
+    /// Applied to images by its op itself rather than through the OCIO
+    /// processor of its baked LUT (the op is exact where a LUT is not, and
+    /// fast: the root polynomials).
+    bool native = false;
     /// Fitted methods: their default training set (nullptr: not fitted).
     TrainingSetFn defaultTraining = nullptr;
     /// Whether a user's training set may replace the default (fit3x3,
@@ -184,11 +185,10 @@ struct MethodEntry
     std::vector<const char*> cameraDefaults;
 
     /// The exact spectral answer, which the others are measured against.
-    bool isReference() const noexcept { return kernel == MethodKernel::SPECTRAL; }
-    /// A method applied to pixels by bandlight's own kernel rather than
-    /// through an OCIO processor (the root polynomials: their native map is
-    /// exact where a LUT is not).
-    bool appliesNatively() const noexcept { return kernel == MethodKernel::ROOTPOLY; }
+    bool isReference() const noexcept { return exactness == MethodExactness::REFERENCE; }
+    /// A method applied to pixels by its own op rather than through an OCIO
+    /// processor (`native`).
+    bool appliesNatively() const noexcept { return native; }
 };
 
 /// Every method, in the order help texts and default lists give them.

@@ -13,7 +13,7 @@
 using namespace bandlight;
 using Catch::Matchers::Contains;
 
-TEST_CASE("Every registry entry has the builder its kernel needs", "[transforms][methods]")
+TEST_CASE("Every registry entry has the builder its exactness needs", "[transforms][methods]")
 {
     std::set<ChangeMethod> seen;
     for (const MethodEntry& e : Methods())
@@ -27,20 +27,21 @@ TEST_CASE("Every registry entry has the builder its kernel needs", "[transforms]
         }
         CHECK(e.parse != nullptr);
         CHECK(e.describe != nullptr);
-        switch (e.kernel)
+        switch (e.exactness)
         {
-            case MethodKernel::MATRIX:
+            case MethodExactness::LINEAR:
                 CHECK(e.litMatrix != nullptr);
-                CHECK(e.pixelForm == nullptr);
+                CHECK(e.makeOp == nullptr);
+                CHECK_FALSE(e.native);
                 break;
-            case MethodKernel::UPSAMPLE:
-            case MethodKernel::ROOTPOLY:
-                CHECK(e.pixelForm != nullptr);
+            case MethodExactness::NONLINEAR:
+                CHECK(e.makeOp != nullptr);
                 CHECK(e.litMatrix == nullptr);
                 CHECK(e.directForm != DirectForm::NONE);  // the cost table times its own form
                 break;
-            case MethodKernel::SPECTRAL:
+            case MethodExactness::REFERENCE:
                 CHECK(e.isReference());
+                CHECK(e.makeOp == nullptr);
                 break;
         }
         // A method that takes a user's training set has a default one.

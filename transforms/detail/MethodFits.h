@@ -7,6 +7,7 @@
 // by comparing method values. Not installed.
 
 #include "transforms/IlluminantChange.h"
+#include "transforms/methods/PixelOp.h"
 
 namespace bandlight::detail
 {
@@ -28,15 +29,34 @@ Mat3 LeastSquaresFit(const Light& from, const Light& to, const MethodSpec& metho
 Mat3 MetamerFit(const Light& from, const Light& to, const MethodSpec& method,
                 const RgbSpace& working, Observer observer);
 
-/// upsample: the per-pixel sigmoid-polynomial fit, re-lit spectrally.
-PixelForm UpsampleForm(const Light& from, const Light& to, const MethodSpec& method,
+/// The balances of balanced plates around a non-linear method: the inverse
+/// balance for `from` before it, the balance for `to` after it (identities
+/// for lit plates).
+struct PlateBalance
+{
+    bool balanced;
+    Mat3 from = Mat3::Identity();
+    Mat3 to = Mat3::Identity();
+};
+
+PlateBalance BalanceOf(const Light& from, const Light& to, const MethodSpec& method,
                        const RgbSpace& working, Observer observer);
-/// rootpoly, rootpoly3: the root polynomial fitted on the training set.
-PixelForm RootPolyForm(const Light& from, const Light& to, const MethodSpec& method,
-                       const RgbSpace& working, Observer observer);
+
+/// upsample: the per-pixel sigmoid-polynomial fit, re-lit spectrally
+/// (transforms/methods/Upsample.cpp).
+std::unique_ptr<PixelOp> UpsampleOp(const Light& from, const Light& to, const MethodSpec& method,
+                                    const RgbSpace& working, Observer observer);
+/// upsample's fits under `from`, which every op from that light shares.
+std::shared_ptr<void> UpsampleShared(const Light& from, const RgbSpace& working,
+                                     Observer observer);
+/// rootpoly, rootpoly3: the root polynomial fitted on the training set
+/// (transforms/methods/RootPolynomial.cpp).
+std::unique_ptr<PixelOp> RootPolyOp(const Light& from, const Light& to, const MethodSpec& method,
+                                    const RgbSpace& working, Observer observer);
 /// rootpoly-camera, rootpoly3-camera: the camera's daylight IDT undone,
 /// then the root polynomial fitted from the camera's record.
-PixelForm RootPolyCameraForm(const Light& from, const Light& to, const MethodSpec& method,
-                             const RgbSpace& working, Observer observer);
+std::unique_ptr<PixelOp> RootPolyCameraOp(const Light& from, const Light& to,
+                                          const MethodSpec& method, const RgbSpace& working,
+                                          Observer observer);
 
 }  // namespace bandlight::detail
