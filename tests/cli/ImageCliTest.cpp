@@ -120,7 +120,7 @@ TEST_CASE("ociocheck passes on every generated config", "[cli][ocio]")
         {"rec2020-10deg", "--working-space rec2020 --observer 1964 --methods cat02,band8-wp"},
         {"all-methods",
          "--illuminants A,D65 --methods none,vonkries,bradford,cat02,band3,band3-wp,"
-         "band6,fit3x3,prefilter,metamer,upsample"},
+         "band6,fit3x3,prefilter,metamer,upsample,hueplane"},
         {"extended", "--base '" + base + "/config.ocio' --illuminants D50,D75,F12"},
     };
     // Blender's own config, when Blender's data are installed (Debian's

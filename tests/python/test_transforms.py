@@ -146,18 +146,19 @@ def test_group_transform_applied_by_pyopencolorio_equals_bandlight_apply(tmp_pat
     assert np.abs(by_cli - pixels).max() > 1e-2
 
 
-def test_native_rootpoly_equals_bandlight_apply(tmp_path):
-    # `bandlight apply --method rootpoly` applies the C++ Relighter natively,
-    # as bandlight.relight does.
+@pytest.mark.parametrize("method", ["rootpoly", "hueplane"])
+def test_native_methods_equal_bandlight_apply(tmp_path, method):
+    # `bandlight apply --method rootpoly` (or hueplane) applies the C++
+    # Relighter's op natively, as bandlight.relight does.
     src = tmp_path / "plate.exr"
-    out = tmp_path / "plate_rootpoly.exr"
+    out = tmp_path / f"plate_{method}.exr"
     pixels = plate()
     write_exr(src, pixels)
-    run_cli("apply", src, out, "--from", "F2", "--to", "D65", "--method", "rootpoly",
-           )
+    run_cli("apply", src, out, "--from", "F2", "--to", "D65", "--method", method)
     by_cli = read_exr(out)
-    by_python = bandlight.relight(pixels, "F2", "D65", "rootpoly")
+    by_python = bandlight.relight(pixels, "F2", "D65", method)
     np.testing.assert_array_equal(by_python, by_cli)
+    assert np.abs(by_python - pixels).max() > 1e-2
 
 
 def test_relight_agrees_with_the_ocio_transform():

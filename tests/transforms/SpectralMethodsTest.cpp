@@ -185,5 +185,5 @@ TEST_CASE("spectral is the reference, not an image transform", "[transforms][met
     CHECK_THROWS_WITH(
         IlluminantChangeMatrix(L("A"), L("D65"), test::LitMethod("upsample"), Working()),
         Contains("is not one 3x3"));
-    CHECK(AllMethodNames().size() == 14);
+    CHECK(AllMethodNames().size() == 15);
 }

@@ -7,4 +7,5 @@
 // registry, in this order (after the built-in methods, before the spectral
 // reference). No include guard: it is a list, not a header.
 #ifdef BANDLIGHT_METHOD
+BANDLIGHT_METHOD(HUE_PLANE, HuePlaneMethod)
 #endif
