@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
-#include <thread>
 
 #include "imaging/ImageApply.h"
 #include "luts/LutWriter.h"
@@ -12,6 +11,7 @@
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
 #include "transforms/Defaults.h"
+#include "transforms/PixelKernels.h"
 #include "transforms/SurfaceRenderer.h"
 
 namespace bandlight::jobs
@@ -77,32 +77,32 @@ std::vector<CostRow> MeasureCost(const std::vector<std::string>& methods,
         if (method.entry().isReference())
         {
             // The exact answer needs a spectrum per pixel: 81 samples through
-            // the 3 × 81 (illuminant × matching functions) weights.
+            // the 3 × 81 (illuminant × matching functions) weights, by the
+            // kernel `spectral` integrates spectral images with (SpectralDot).
             const SurfaceRenderer r(BuiltinIlluminant("D65"), ws);
+            const size_t k = SurfaceRenderer::kSamples;
             const long n = std::min<long>(pixels, 1 << 20);
-            Eigen::MatrixXf spectra = Eigen::MatrixXf::Random(SurfaceRenderer::kSamples, n);
-            const Eigen::Matrix<float, 3, SurfaceRenderer::kSamples> a = r.matrix().cast<float>();
+            const std::vector<float> spectra = TestPixels(n, int(k));
+            std::vector<float> weights(3 * k);
+            for (size_t c = 0; c < 3; ++c)
+            {
+                for (size_t j = 0; j < k; ++j)
+                {
+                    weights[c * k + j] = float(r.matrix()(Eigen::Index(c), Eigen::Index(j)));
+                }
+            }
             for (int threads : {1, AllThreads()})
             {
-                Eigen::MatrixXf out(3, n);
+                std::vector<float> out(3 * size_t(n));
                 const double s = BestSeconds(
                     [&]
                     {
-                        std::vector<std::thread> pool;
-                        const long chunk = (n + threads - 1) / threads;
-                        for (int t = 0; t < threads; ++t)
-                        {
-                            const long b = chunk * t, e = std::min(n, b + chunk);
-                            pool.emplace_back(
-                                [&, b, e] {
-                                    out.middleCols(b, e - b).noalias() =
-                                        a * spectra.middleCols(b, e - b);
-                                });
-                        }
-                        for (auto& th : pool)
-                        {
-                            th.join();
-                        }
+                        ParallelFor(size_t(n), threads,
+                                    [&](size_t a, size_t b)
+                                    {
+                                        SpectralDot(weights.data(), k, spectra.data() + a * k,
+                                                    b - a, k, out.data() + 3 * a, 3);
+                                    });
                     });
                 rows.push_back({name, CostForm::SPECTRAL, threads, s * 1e9 / double(n)});
             }
