@@ -19,5 +19,6 @@ void AddAccuracyCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddSpectralCommand(CLI::App& app);
+void AddMethodsCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

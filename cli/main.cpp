@@ -46,6 +46,7 @@ void AddCommands(CLI::App& app)
     bandlight::cli::AddPlotCommand(app);
     bandlight::cli::AddRenderCommand(app);
     bandlight::cli::AddSpectralCommand(app);
+    bandlight::cli::AddMethodsCommand(app);
 }
 
 /// CLI11 says only "A subcommand is required" for a mistyped command: name

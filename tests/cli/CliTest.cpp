@@ -89,6 +89,43 @@ TEST_CASE("cri --json has the documented shape", "[cli]")
     CHECK(j.contains("duv"));
 }
 
+TEST_CASE("methods lists the registry as each method describes itself", "[cli]")
+{
+    const Result r = Run("methods --json");
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    REQUIRE(j.size() >= 13);
+    int references = 0;
+    for (const auto& m : j)
+    {
+        INFO(m["names"]);
+        const std::string exactness = m["exactness"];
+        CHECK((exactness == "linear" || exactness == "non-linear" || exactness == "reference"));
+        references += exactness == "reference";
+        // Only an op can run natively; a 3x3 always goes through OCIO.
+        CHECK((!m["native"].get<bool>() || exactness == "non-linear"));
+        CHECK(m["description"].get<std::string>().size() > 20);
+        if (m["names"] == "hueplane")
+        {
+            CHECK(exactness == "non-linear");
+            CHECK(m["native"].get<bool>());
+            CHECK(m["training_size"] == 205);
+            CHECK(m["default_in"] == nlohmann::json::array({"accuracy"}));
+        }
+        if (m["names"] == "bradford")
+        {
+            CHECK(exactness == "linear");
+            CHECK(m["default_in"] == nlohmann::json::array({"config", "accuracy"}));
+        }
+    }
+    CHECK(references == 1);
+    CHECK(j.back()["names"] == "spectral");
+    // The text form names every method once.
+    const Result text = Run("methods");
+    REQUIRE(text.code == 0);
+    CHECK_THAT(text.out, Contains("hueplane (non-linear, native in apply, fitted on 205"));
+}
+
 TEST_CASE("Bad input: one line on stderr and exit code 2", "[cli]")
 {
     Result r = Run("xyz --illuminant Tungsten");
