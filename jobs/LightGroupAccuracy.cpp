@@ -86,8 +86,7 @@ double Seconds(std::chrono::steady_clock::time_point t0)
 /// The methods measured when none are named.
 std::vector<std::string> MethodsOf(const LightGroupAccuracyRequest& r)
 {
-    return r.methods.empty() ? std::vector<std::string>{"bradford", "cat02", "fit3x3", "rootpoly"}
-                             : r.methods;
+    return r.methods.empty() ? LightGroupMethodNames() : r.methods;
 }
 
 /// Throws unless every light group of the image is given its change.

@@ -174,24 +174,41 @@ std::vector<SetupCost> MeasureSetupCost(const std::string& workingSpace)
 {
     const RgbSpace& ws = FindRgbSpace(workingSpace);
     std::vector<SetupCost> out;
-    out.push_back(
-        {"fit3x3: fitting one pair (108 training remittances)",
-         BestSeconds([&]
-                     { IlluminantChangeMatrix(L("A"), L("D65"), ParseMethod("fit3x3"), ws); })});
-    out.push_back({"rootpoly: fitting one pair (205 training remittances)",
-                   BestSeconds([&] { Relighter(L("A"), L("D65"), ParseMethod("rootpoly"), ws); })});
-    for (int size : {17, 33, 65})
+    // Each method fitted on training remittances (by the first name of its
+    // defaults): fitting one pair.
+    for (const MethodEntry& e : Methods())
     {
-        // Fresh fits for each size (see MeasureCost).
-        const Relighter up(L("A"), L("D65"), ParseMethod("upsample"), ws);
-        out.push_back({"upsample: baking a " + std::to_string(size) + "^3 LUT, all threads",
-                       BestSeconds(
-                           [&]
-                           {
-                               BakeLattice([&](float* p, size_t n) { up.apply(p, n); },
-                                           ShaperSpec::ForNonLinear(), size, true);
-                           },
-                           1)});
+        if (!e.defaultTraining || e.needsCamera || e.accuracyDefaults.empty())
+        {
+            continue;
+        }
+        const MethodSpec m = ParseMethod(e.accuracyDefaults.front());
+        out.push_back({m.name + ": fitting one pair (" + std::to_string(TrainingOf(m).size()) +
+                           " training remittances)",
+                       BestSeconds([&] { Relighter(L("A"), L("D65"), m, ws); })});
+    }
+    // Each method whose ops fit every pixel (their fits shared per light):
+    // baking a config's LUT, the one-off cost of its look.
+    for (const MethodEntry& e : Methods())
+    {
+        if (!e.sharedPerLight || e.accuracyDefaults.empty())
+        {
+            continue;
+        }
+        const MethodSpec m = ParseMethod(e.accuracyDefaults.front());
+        for (int size : {17, 33, 65})
+        {
+            // Fresh fits for each size (see MeasureCost).
+            const Relighter op(L("A"), L("D65"), m, ws);
+            out.push_back({m.name + ": baking a " + std::to_string(size) + "^3 LUT, all threads",
+                           BestSeconds(
+                               [&]
+                               {
+                                   BakeLattice([&](float* p, size_t n) { op.apply(p, n); },
+                                               ShaperSpec::ForNonLinear(), size, true);
+                               },
+                               1)});
+        }
     }
     return out;
 }

@@ -200,6 +200,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     bradford.adaptation = AdaptationMethod::BRADFORD;
     bradford.configDefaults = {"bradford"};
     bradford.accuracyDefaults = {"bradford"};
+    bradford.lightGroupDefaults = {"bradford"};
     all.push_back(bradford);
 
     MethodEntry cat02 =
@@ -210,6 +211,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     cat02.adaptation = AdaptationMethod::CAT02;
     cat02.configDefaults = {"cat02"};
     cat02.accuracyDefaults = {"cat02"};
+    cat02.lightGroupDefaults = {"cat02"};
     all.push_back(cat02);
 
     MethodEntry band = Entry(ChangeMethod::BAND,
@@ -230,6 +232,7 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     fit3x3.defaultTraining = &Fit3x3Training;
     fit3x3.takesTraining = true;
     fit3x3.accuracyDefaults = {"fit3x3"};
+    fit3x3.lightGroupDefaults = {"fit3x3"};
     all.push_back(fit3x3);
 
     MethodEntry prefilter =
@@ -278,6 +281,7 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
     rootpoly.takesTraining = true;
     rootpoly.directForm = DirectForm::NATIVE;
     rootpoly.accuracyDefaults = {"rootpoly", "rootpoly3"};
+    rootpoly.lightGroupDefaults = {"rootpoly"};
     all.push_back(rootpoly);
 
     MethodEntry rootpolyCamera = Entry(
@@ -459,6 +463,12 @@ const std::vector<std::string>& AllMethodNames()
 const std::vector<std::string>& CameraMethodNames()
 {
     static const std::vector<std::string> names = Collect(&MethodEntry::cameraDefaults);
+    return names;
+}
+
+const std::vector<std::string>& LightGroupMethodNames()
+{
+    static const std::vector<std::string> names = Collect(&MethodEntry::lightGroupDefaults);
     return names;
 }
 

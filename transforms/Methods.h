@@ -183,6 +183,9 @@ struct MethodEntry
     /// The names the accuracy report measures by default when a camera is
     /// given and no methods are named.
     std::vector<const char*> cameraDefaults;
+    /// The names `accuracy --light-group` compares (one global look against
+    /// a look per group) when no methods are named.
+    std::vector<const char*> lightGroupDefaults;
 
     /// The exact spectral answer, which the others are measured against.
     bool isReference() const noexcept { return exactness == MethodExactness::REFERENCE; }
@@ -235,6 +238,10 @@ const std::vector<std::string>& AllMethodNames();
 /// The methods the accuracy report measures when a camera is given and no
 /// methods are named: rootpoly-camera.
 const std::vector<std::string>& CameraMethodNames();
+
+/// The methods `accuracy --light-group` measures when none are named:
+/// bradford, cat02, fit3x3, rootpoly.
+const std::vector<std::string>& LightGroupMethodNames();
 
 /// Every method name a user can give, as help text: "none, vonkries, ...,
 /// rootpoly-camera (with {camera})" (a ParameterError template).
