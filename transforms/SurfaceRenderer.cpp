@@ -14,16 +14,31 @@ SurfaceRenderer::SurfaceRenderer(const Spectrum& illuminant, const RgbSpace& wor
 {
     const MatchingFunctions& cmf = GetMatchingFunctions(observer);
     Eigen::Matrix<double, 3, kSamples> xyz;
+    Eigen::Matrix<double, 3, kSamples> observerXyz;
     for (int i = 0; i < kSamples; ++i)
     {
         const double l = Wavelength(i);
         const double s = illuminant(l);
+        observerXyz.col(i) = Vec3(cmf.x(l), cmf.y(l), cmf.z(l));
         xyz.col(i) = s * Vec3(cmf.x(l), cmf.y(l), cmf.z(l));
     }
     const double k = 1.0 / xyz.row(1).sum();  // white reflector: Y = 1
     m_rgbToXyz = RgbToXyzMatrix(working.chromaticities);
     m_a = m_rgbToXyz.inverse() * (xyz * k);
     m_white = m_a.rowwise().sum();
+    m_illuminant = illuminant;
+    m_light = m_rgbToXyz.inverse() * (observerXyz * k);
+}
+
+Vec3 SurfaceRenderer::render(const Surface& surface) const
+{
+    const Spectrum out = surface.reflect(m_illuminant);
+    Samples s;
+    for (int i = 0; i < kSamples; ++i)
+    {
+        s(i) = out(Wavelength(i));
+    }
+    return m_light * s;
 }
 
 SurfaceRenderer::Samples SurfaceRenderer::Sample(const Spectrum& remittance)

@@ -10,6 +10,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/RgbSpaces.h"
 #include "spectral/Spectrum.h"
+#include "spectral/Surface.h"
 
 namespace bandlight
 {
@@ -38,6 +39,12 @@ public:
 
     Vec3 render(const Samples& remittance) const { return m_a * remittance; }
     Vec3 render(const Spectrum& remittance) const { return m_a * Sample(remittance); }
+    /// Any surface (spectral/Surface.h: a remittance, a bi-spectral
+    /// fluorescent one): the light it sends back under the illuminant,
+    /// integrated on the grid (zero where it sends nothing), the white
+    /// reflector still at Y = 1. For a RemittanceSurface it equals
+    /// render(remittance) to rounding.
+    Vec3 render(const Surface& surface) const;
 
     const Matrix& matrix() const noexcept { return m_a; }
     /// The perfect white reflector's RGB (Y = 1).
@@ -48,6 +55,11 @@ private:
     Matrix m_a;
     Vec3 m_white;
     Mat3 m_rgbToXyz;
+    /// The illuminant, and light on the grid → working RGB (the matching
+    /// functions with the renderer's normalisation): what render(Surface)
+    /// needs apart, since a surface may move light between wavelengths.
+    Spectrum m_illuminant;
+    Matrix m_light;
 };
 
 /// A named set of remittances.
