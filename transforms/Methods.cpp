@@ -14,7 +14,7 @@ namespace bandlight
 {
 
 // The entries of the methods in files of their own (transforms/methods/List.h).
-#define BANDLIGHT_METHOD(KEY, MAKE) MethodEntry MAKE();
+#define BANDLIGHT_METHOD(KEY, MAKE) MethodEntry MAKE(ChangeMethod key);
 #include "transforms/methods/List.h"
 #undef BANDLIGHT_METHOD
 
@@ -314,7 +314,7 @@ std::vector<MethodEntry> MakeMethods()
     std::vector<MethodEntry> all;
     AddMatrixMethods(all);
     AddPixelMethods(all);
-#define BANDLIGHT_METHOD(KEY, MAKE) all.push_back(MAKE());
+#define BANDLIGHT_METHOD(KEY, MAKE) all.push_back(MAKE(ChangeMethod::KEY));
 #include "transforms/methods/List.h"
 #undef BANDLIGHT_METHOD
     AddReference(all);
@@ -437,6 +437,10 @@ MethodSpec ParseMethod(const std::string& name)
     {
         if (e.parse(n, m))
         {
+            if (e.methods.size() == 1)
+            {
+                m.method = e.methods.front();  // an entry of one method: its key
+            }
             return m;
         }
     }

@@ -146,7 +146,8 @@ struct MethodEntry
     const char* syntax;
     MethodExactness exactness;
     /// Parses a lower-case name into `spec`; false when the name is not of
-    /// this entry (throws Exception when it is, but malformed).
+    /// this entry (throws Exception when it is, but malformed). An entry of
+    /// one method need not set `spec.method`: ParseMethod sets its key.
     bool (*parse)(const std::string& name, MethodSpec& spec);
     /// One sentence on what the method does and how accurate it is.
     std::string (*describe)(const MethodSpec& spec);

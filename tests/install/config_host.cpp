@@ -3,7 +3,7 @@
 // writes FOLDER/config.ocio (the test compares it with the command's).
 #include <iostream>
 
-#include <bandlight/jobs/ConfigJob.h>
+#include <bandlight/bandlight.h>
 
 int main(int argc, char** argv)
 {

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <iostream>
 
-#include <bandlight/plugin/OcioTransforms.h>
-#include <bandlight/spectral/Illuminants.h>
+#include <bandlight/bandlight.h>
 
 int main()
 {

@@ -264,14 +264,9 @@ std::unique_ptr<PixelOp> MakeOp(const Light& from, const Light& to, const Method
     return op;
 }
 
-bool Parse(const std::string& name, MethodSpec& spec)
+bool Parse(const std::string& name, MethodSpec&)
 {
-    if (name != "hueplane")
-    {
-        return false;
-    }
-    spec.method = ChangeMethod::HUE_PLANE;
-    return true;
+    return name == "hueplane";
 }
 
 std::string Describe(const MethodSpec&)
@@ -285,10 +280,10 @@ std::string Describe(const MethodSpec&)
 
 }  // namespace
 
-MethodEntry HuePlaneMethod()
+MethodEntry HuePlaneMethod(ChangeMethod key)
 {
     MethodEntry e;
-    e.methods = {ChangeMethod::HUE_PLANE};
+    e.methods = {key};
     e.syntax = "hueplane";
     e.exactness = MethodExactness::NONLINEAR;
     e.parse = &Parse;

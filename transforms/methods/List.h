@@ -2,7 +2,7 @@
 // The methods that live in a file of their own under transforms/methods/,
 // one line each: BANDLIGHT_METHOD(KEY, MAKE) gives the method's key (a
 // ChangeMethod value) and the function of its file that makes its registry
-// entry (MethodEntry MAKE()). Read twice, with BANDLIGHT_METHOD defined:
+// entry (MethodEntry MAKE(ChangeMethod key), given its key). Read twice, with BANDLIGHT_METHOD defined:
 // by transforms/Methods.h for the keys, by transforms/Methods.cpp for the
 // registry, in this order (after the built-in methods, before the spectral
 // reference). No include guard: it is a list, not a header.
