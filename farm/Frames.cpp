@@ -423,16 +423,9 @@ std::vector<FrameOutcome> RunFrames(const FrameSetRequest& r, Reporter& reporter
                               double(finished) / double(frames.size()));
         }
     };
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < inFlight; ++t)
-    {
-        pool.emplace_back(worker);
-    }
-    worker();
-    for (std::thread& t : pool)
-    {
-        t.join();
-    }
+    // The one pool (spectral/Parallel.h): threads the system refuses are not
+    // started, and the calling thread works too.
+    ParallelRun(int(std::min<size_t>(inFlight, size_t(kMaxThreads))), frames.size(), worker);
     return outcomes;
 }
 
