@@ -40,6 +40,15 @@ TEST_CASE("upsample looks (CLF files of a package) compile and run on the GPU", 
     CHECK(CheckConfigOnGpu(options, "upsample") == 4);
 }
 
+TEST_CASE("hueplane looks (a method in a file of its own) compile and run on the GPU", "[gpu]")
+{
+    ConfigOptions options;
+    options.lights = {L("A"), L("D65")};
+    options.methods = {"hueplane", "bradford"};
+    // hueplane A→D65 and D65→A, as looks and as named transforms.
+    CHECK(CheckConfigOnGpu(options, "hueplane") == 4);
+}
+
 TEST_CASE("Looks for lit and balanced plates, rootpoly-camera included, compile and run on the GPU",
           "[gpu]")
 {
