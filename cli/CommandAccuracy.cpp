@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "jobs/AccuracyJob.h"
-#include "jobs/Defaults.h"
-#include "jobs/LightGroupAccuracy.h"
+#include "requests/Defaults.h"
+#include "measure/LightGroupAccuracy.h"
 #include "spectral/RgbSpaces.h"
 #include "cli/Commands.h"
 #include "cli/Common.h"

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "jobs/ApplyJob.h"
-#include "jobs/Defaults.h"
-#include "jobs/Inputs.h"
+#include "requests/Defaults.h"
+#include "requests/Inputs.h"
 #include "spectral/Parallel.h"
 #include "spectral/TextFile.h"
 #include "cli/Commands.h"

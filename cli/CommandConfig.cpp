@@ -7,7 +7,7 @@
 #include "cli/Commands.h"
 #include "cli/Common.h"
 #include "jobs/ConfigJob.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "spectral/RgbSpaces.h"
 
 namespace bandlight::cli

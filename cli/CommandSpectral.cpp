@@ -4,7 +4,7 @@
 #include <iostream>
 #include <memory>
 
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "jobs/SpectralJob.h"
 #include "spectral/Parallel.h"
 #include "spectral/RgbSpaces.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli/Diagnostics.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "spectral/RgbSpaces.h"
 #include "transforms/Plates.h"
 

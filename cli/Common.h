@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "farm/Frames.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/Exception.h"
 
 namespace bandlight::cli

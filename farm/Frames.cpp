@@ -491,4 +491,23 @@ FrameRun RunFrameSet(const FrameSetRequest& r, Reporter& reporter, const FrameWo
     return run;
 }
 
+std::string FirstExistingInput(const FrameSetRequest& f)
+{
+    std::error_code ec;
+    if (f.frames.empty())
+    {
+        return std::filesystem::is_regular_file(f.input, ec) ? f.input : "";
+    }
+    for (const int frame : ParseFrameRange(f.frames))
+    {
+        const std::string in = ExpandFramePattern(f.input, frame);
+        if (std::filesystem::is_regular_file(in, ec))
+        {
+            return in;
+        }
+    }
+    return "";
+}
+
+
 }  // namespace bandlight::jobs

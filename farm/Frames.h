@@ -5,6 +5,8 @@
 // ranges that name their frames.
 
 #include <functional>
+#include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -94,5 +96,47 @@ void CheckFrameSetPaths(const FrameSetRequest& request);
 
 FrameRun RunFrameSet(const FrameSetRequest& request, Reporter& reporter,
                      const std::function<void(const std::string& in, const std::string& out)>& one);
+
+/// The first input of a request that is there: the image, or the first
+/// frame whose input exists ("" when none is).
+std::string FirstExistingInput(const FrameSetRequest& frames);
+
+/// Each note of a frame set's frames said once, the frame's file names
+/// given as the set's patterns (a note per frame would repeat itself).
+class FrameNotes
+{
+public:
+    FrameNotes(std::string inputPattern, std::string outputPattern, Reporter& reporter)
+        : m_input(std::move(inputPattern)), m_output(std::move(outputPattern)), m_reporter(reporter)
+    {
+    }
+    void add(const std::vector<std::string>& notes, const std::string& in, const std::string& out)
+    {
+        std::lock_guard<std::mutex> lock(m_mu);
+        for (std::string n : notes)
+        {
+            for (const auto& [name, pattern] :
+                 {std::pair{in, m_input}, std::pair{out, m_output}})
+            {
+                for (size_t at = n.find(name); !name.empty() && at != std::string::npos;
+                     at = n.find(name, at + pattern.size()))
+                {
+                    n.replace(at, name.size(), pattern);
+                }
+            }
+            if (m_noted.insert(n).second)
+            {
+                m_reporter.note(n);
+            }
+        }
+    }
+
+private:
+    std::string m_input;
+    std::string m_output;
+    Reporter& m_reporter;
+    std::set<std::string> m_noted;
+    std::mutex m_mu;
+};
 
 }  // namespace bandlight::jobs

@@ -164,9 +164,16 @@ bool IsFloatOnlyFile(const std::string& path)
 }
 }  // namespace
 
-std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
-                                      const std::string& out, const std::string& note,
-                                      const ImageColourRequest& colour)
+namespace
+{
+
+/// Runs a pixel process over an image: its file read and written
+/// (TransformImage), or its pixels in memory.
+using PixelRunner = std::function<void(const PixelProcess&)>;
+
+std::vector<std::string> ApplyWith(const BufferWork& work, const std::string& in,
+                                   const std::string& out, const ImageColourRequest& colour,
+                                   const PixelRunner& run)
 {
     std::vector<std::string> notes;
     const auto process = [&](float* pixels, long width, long height, int channels, const int* rgb,
@@ -240,9 +247,11 @@ std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string&
             }
         }
     };
-    TransformImage(in, out, process, note, false);
+    run(process);
     return notes;
 }
+
+}  // namespace
 
 LightGroupLayout CheckedLightGroups(const LightGroupApply& apply, const std::string& file,
                                     const ImageData& header)
@@ -276,10 +285,13 @@ LightGroupLayout CheckedLightGroups(const LightGroupApply& apply, const std::str
     return layout;
 }
 
-std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
-                                                 const std::string& in, const std::string& out,
-                                                 const std::string& note,
-                                                 const ImageColourRequest& colour)
+namespace
+{
+
+std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
+                                              const std::string& in, const std::string& out,
+                                              const ImageColourRequest& colour,
+                                              const PixelRunner& run)
 {
     std::vector<std::string> notes;
     int relitParts = 0;
@@ -369,8 +381,58 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
         RelightLightGroups(layout, works, pixels, width, height, channels, where);
         ++relitParts;
     };
-    TransformImage(in, out, process, note, true);
+    run(process);
     return notes;
+}
+
+/// The pixels of an image read whole, as one part, given to `process`:
+/// R, G, B are the channels so named.
+PixelRunner InMemory(ImageData& image, const std::string& source)
+{
+    return [&image, source](const PixelProcess& process)
+    {
+        int rgb[3] = {-1, -1, -1};
+        for (int c = 0; c < 3; ++c)
+        {
+            const std::string name(1, "RGB"[c]);
+            const auto at = std::find(image.channelNames.begin(), image.channelNames.end(), name);
+            rgb[c] = at == image.channelNames.end() ? -1 : int(at - image.channelNames.begin());
+        }
+        process(image.pixels.data(), image.width, image.height, image.channels, rgb, image);
+    };
+}
+
+}  // namespace
+
+std::vector<std::string> ApplyToImage(const BufferWork& work, const std::string& in,
+                                      const std::string& out, const std::string& note,
+                                      const ImageColourRequest& colour)
+{
+    return ApplyWith(work, in, out, colour, [&](const PixelProcess& p)
+                     { TransformImage(in, out, p, note, false); });
+}
+
+std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
+                                                 const std::string& in, const std::string& out,
+                                                 const std::string& note,
+                                                 const ImageColourRequest& colour)
+{
+    return ApplyLightGroupsWith(apply, in, out, colour, [&](const PixelProcess& p)
+                                { TransformImage(in, out, p, note, true); });
+}
+
+std::vector<std::string> ApplyToImageData(const BufferWork& work, ImageData& image,
+                                          const std::string& source,
+                                          const ImageColourRequest& colour)
+{
+    return ApplyWith(work, source, "", colour, InMemory(image, source));
+}
+
+std::vector<std::string> ApplyLightGroupsToImageData(const LightGroupApply& apply,
+                                                     ImageData& image, const std::string& source,
+                                                     const ImageColourRequest& colour)
+{
+    return ApplyLightGroupsWith(apply, source, "", colour, InMemory(image, source));
 }
 
 }  // namespace bandlight::jobs

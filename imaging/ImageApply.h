@@ -86,6 +86,16 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                  const std::string& note,
                                                  const ImageColourRequest& colour);
 
+/// ApplyToImage and ApplyLightGroupsToImage on an image in memory (read
+/// whole, one part; `source` names it in messages): the same pixels those
+/// write, without the files. The light-group accuracy measures through these.
+std::vector<std::string> ApplyToImageData(const BufferWork& work, ImageData& image,
+                                          const std::string& source,
+                                          const ImageColourRequest& colour);
+std::vector<std::string> ApplyLightGroupsToImageData(const LightGroupApply& apply,
+                                                     ImageData& image, const std::string& source,
+                                                     const ImageColourRequest& colour);
+
 /// Applies a processor in place to an interleaved float image with RGB in
 /// channels rgb[0..2] and `channels` channels per pixel, split by rows over
 /// `threads` threads.

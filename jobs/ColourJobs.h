@@ -10,10 +10,10 @@
 
 #include <Eigen/Core>
 
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/ColourRendering.h"
 #include "transforms/BandModel.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -1,131 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
+// `idt`: the verb. Its request and result are in requests/Idt.h, the fits
+// in camera/IdtFit.h, the JSON and text report in report/IdtReport.h.
 
-#include <string>
-#include <vector>
 
-#include "jobs/Defaults.h"
-#include "farm/Reporter.h"
-#include "transforms/Idt.h"
+#include "report/IdtReport.h"
+#include "requests/Idt.h"
 
 namespace bandlight::jobs
 {
-
-/// `idt`: camera input transforms from a camera's spectral sensitivities
-/// (or a photographed chart), one per light, fitted as rawtoaces fits them
-/// and iterated to the optimum; optionally as OCIO input colour spaces, the
-/// DNG interpolation between two of them and the light of an as-shot
-/// neutral.
-struct IdtRequest
-{
-    /// Camera sensitivities (rawtoaces JSON, CSV or CGATS); not with a chart.
-    std::string camera;
-    /// Lights: built-in names (A, D55, F11, ...), colour temperatures
-    /// ("3200K": daylight from 4000 K, Planckian below) or spectrum files.
-    std::vector<std::string> lights;
-    std::string workingSpace = defaults::IDT_WORKING_SPACE;
-    std::string adaptation = defaults::ADAPTATION;  ///< "cat02" or "bradford"
-    std::string observer = defaults::OBSERVER;
-    /// Training remittances (a file or a built-in set); empty: rawtoaces' 190.
-    std::string training;
-    /// The second set errors are measured on.
-    std::string testSet = defaults::IDT_TEST_SET;
-    /// Two lights to fit and interpolate between as DNG does (InterpolateIdt:
-    /// the colour matrix in mired, extrapolated beyond the pair, DNG's clamp
-    /// reported beside; white balance and CAT for each light).
-    std::vector<std::string> interpolate;
-    /// The camera's as-shot neutral (raw R, G, B; any scale), or empty.
-    std::vector<double> asShotNeutral;
-    /// A chart's camera RGB per patch (CSV: optional name column, then R, G,
-    /// B), the chart's remittances and the light it was shot under: the IDT
-    /// from the chart instead of sensitivities.
-    std::string chartRgb;
-    std::string chart;
-    std::string chartLight;
-    /// With a chart: also fit a root polynomial of this degree (2 or 3;
-    /// 0 none) on it, exposure invariant (Finlayson et al. 2015), and report
-    /// its error beside the 3×3's.
-    int chartRootPolynomial = defaults::IDT_CHART_ROOTPOLY;
-    /// Write the JSON document here ("" none).
-    std::string json;
-    /// Write a new OCIO v2 config of the input spaces into this folder.
-    std::string config;
-    /// Extend this config with the input spaces, written into `out`.
-    std::string base;
-    std::string out;
-    /// The primaries of the base's scene_linear space, when the base does
-    /// not tell them (empty: identified from the base, as `config --base`).
-    std::string baseSpace;
-};
-
-/// One light's IDT as reported.
-struct IdtEntry
-{
-    std::string light;
-    double cct = 0.0;  ///< K, of the light's white (CIE 15:2004 §9.5)
-    double duv = 0.0;
-    IdtFit fit;
-    std::vector<IdtError> errors;  ///< training set, then the test set
-    std::string colorSpace;        ///< its colour space in the config ("" none)
-};
-
-/// The interpolated IDT at one colour temperature against one fitted there,
-/// ΔE00 on the test set (L*a*b* relative to the working white).
-struct IdtInterpolationPoint
-{
-    double cct = 0.0;  ///< K, the nominal temperature of the light (IdtLightForCct)
-    /// The interpolated IDT's output against the fitted IDT's, same
-    /// balanced camera RGB: mean, p95 (nearest rank) and max.
-    double meanVsDirect = 0.0;
-    double p95VsDirect = 0.0;
-    double maxVsDirect = 0.0;
-    double clampedMeanVsDirect = 0.0;  ///< the same mean with DNG's clamp to the pair
-    double interpolatedMean = 0.0;     ///< mean ΔE00 against the truth
-    double directMean = 0.0;
-    double clampedMean = 0.0;  ///< mean ΔE00 against the truth with DNG's clamp to the pair
-};
-
-struct IdtResult
-{
-    std::string camera;
-    std::string workingSpace;  ///< the space's key (aces2065-1)
-    std::string adaptation;
-    std::string trainingName;
-    int trainingCount = 0;
-    std::string testName;
-    int testCount = 0;
-    std::vector<IdtEntry> idts;
-    bool hasAsShot = false;
-    AsShotEstimate asShot;
-    std::vector<double> asShotNeutral;
-    /// --interpolate: the pair (indices into idts) and the sweep.
-    int interpolateFrom = -1;
-    int interpolateTo = -1;
-    IdtCalibration interpolateCalibrations[2];  ///< the colour matrices interpolated
-    std::vector<IdtInterpolationPoint> interpolation;
-    bool chart = false;        ///< fitted from a chart
-    std::string chartNeutral;  ///< the chart patch that set the white balance
-    /// With chartRootPolynomial: its fit on the chart (balanced camera RGB →
-    /// working RGB) and its error there.
-    RootPolynomial chartRootPolynomial;
-    IdtError chartRootPolynomialError;
-    bool hasChartRootPolynomial = false;
-    std::vector<std::string> written;
-};
 
 /// Checks every input and output first (one line each: dead channels,
 /// lights a channel does not see, chart files, options that do not go
 /// together, output paths), then fits, measures and writes (the JSON and the
 /// config commit together).
 IdtResult MakeIdt(const IdtRequest& request, Reporter& reporter = SilentReporter());
-
-/// The JSON document of a result (`idt --json`): {"camera", "working_space",
-/// "idts": [{"light", "cct", "duv", "gains", "matrix", "first_order_matrix",
-/// "error": {SET: {"mean", "p95", "max"}}, ...}], "as_shot": {...},
-/// "interpolation": {...}}.
-std::string IdtDocument(const IdtResult& result);
-
-/// The text report of a result.
-std::string IdtReport(const IdtResult& result);
 
 }  // namespace bandlight::jobs

@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "luts/LutWriter.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::jobs
 {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "farm/Reporter.h"
-#include "jobs/Defaults.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::jobs
 {

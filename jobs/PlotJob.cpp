@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "report/Gnuplot.h"
 #include "spectral/CieData.h"
 #include "spectral/Exception.h"

@@ -13,6 +13,14 @@
 namespace bandlight
 {
 
+bool PathExists(const std::string& path)
+{
+    struct stat st
+    {
+    };
+    return !path.empty() && ::stat(path.c_str(), &st) == 0;
+}
+
 int InputFileError(const std::string& path)
 {
     struct stat st

@@ -17,6 +17,11 @@ constexpr size_t MAX_TEXT_FILE_BYTES = size_t(64) << 20;
 /// ("spectrum file").
 std::string ReadTextFile(const std::string& path, const std::string& what);
 
+/// Whether anything is at `path` (a file, a folder, a pipe), asked without
+/// opening it: opening a pipe waits for a writer. Readers then refuse what is
+/// not a regular file (ReadTextFile, InputFileError) before they open it.
+bool PathExists(const std::string& path);
+
 /// 0 when `path` is a regular file that opens for reading (or a device or
 /// pipe, which is not opened), else the errno that says why not: ENOENT,
 /// EACCES, ENOTDIR, EISDIR for a directory. For files that another library

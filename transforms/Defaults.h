@@ -3,7 +3,7 @@
 
 // The one table of bandlight's library defaults: the parameters of the
 // transforms and measurements themselves. The jobs add the defaults of what
-// a run writes and how it runs (jobs/Defaults.h). The C++ request structs
+// a run writes and how it runs (requests/Defaults.h). The C++ request structs
 // (jobs/), the command's options (cli/) and the Python module's keywords
 // (python/) all take their defaults from these two files, so the three faces
 // cannot drift apart; tests/python/test_defaults.py holds Python to them.

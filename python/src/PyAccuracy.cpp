@@ -5,7 +5,7 @@
 
 #include "PyBandlight.h"
 #include "jobs/AccuracyJob.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

@@ -3,7 +3,7 @@
 // as `bandlight apply` applies them (jobs/ApplyJob).
 #include "PyBandlight.h"
 #include "jobs/ApplyJob.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "farm/Frames.h"
 
 namespace bandlight::python

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The module init, and how C++ errors become Python exceptions.
 #include "PyBandlight.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 #include <cerrno>
 

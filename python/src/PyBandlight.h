@@ -17,7 +17,7 @@
 #include <pybind11/stl.h>
 
 #include "farm/Frames.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"

@@ -3,7 +3,7 @@
 // function band matrices, the band <-> working-space matrices, the tables.
 #include "PyBandlight.h"
 #include "spectral/Illuminants.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

@@ -6,7 +6,7 @@
 #include "jobs/ColourJobs.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/ColourRendering.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

@@ -9,7 +9,7 @@
 #include "jobs/ConfigJob.h"
 #include "jobs/LutJob.h"
 #include "plugin/SceneLinearEvidence.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

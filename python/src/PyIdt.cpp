@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "PyBandlight.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "jobs/IdtJob.h"
 
 namespace bandlight::python

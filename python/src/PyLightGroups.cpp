@@ -3,7 +3,7 @@
 // beauty rebuilt as Σ relit groups + residual (jobs/LightGroups), as
 // `bandlight apply --light-group` does it to files.
 #include "PyBandlight.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "imaging/ImageApply.h"
 #include "imaging/LightGroups.h"
 

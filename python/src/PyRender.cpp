@@ -3,7 +3,7 @@
 // files `bandlight render` writes (the render job, jobs/RenderJob.h), and
 // the planner's account of it.
 #include "PyBandlight.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "jobs/RenderJob.h"
 
 namespace bandlight::python

@@ -2,7 +2,7 @@
 // Spectral images (jobs/SpectralJob): read, integrated and relit in memory,
 // and spectral EXRs converted to RGB EXRs as `bandlight spectral` does.
 #include "PyBandlight.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "jobs/SpectralJob.h"
 
 namespace bandlight::python

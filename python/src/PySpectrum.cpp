@@ -6,7 +6,7 @@
 
 #include "PyBandlight.h"
 #include "spectral/Illuminants.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

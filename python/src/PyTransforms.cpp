@@ -11,7 +11,7 @@
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"
 #include "spectral/Parallel.h"
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "jobs/AccuracyJob.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "cli/RunCommand.h"
 
 using namespace bandlight;

@@ -17,7 +17,7 @@
 
 #include "jobs/ApplyJob.h"
 #include "imaging/ImageApply.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/Exception.h"
 #include "jobs/JobsTestSupport.h"
 #include "jobs/LightGroupsTestSupport.h"

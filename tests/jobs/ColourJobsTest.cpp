@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "jobs/ColourJobs.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "cli/RunCommand.h"
 
 using namespace bandlight;

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "jobs/ConfigJob.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/Exception.h"
 #include "jobs/JobsTestSupport.h"
 

@@ -21,7 +21,7 @@
 #include "cli/RunCommand.h"
 #include "jobs/ApplyJob.h"
 #include "imaging/ImageApply.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "jobs/SpectralJob.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"

@@ -8,7 +8,7 @@
 
 #include "cli/RunCommand.h"
 #include "farm/Frames.h"
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "spectral/Exception.h"
 
 using namespace bandlight;

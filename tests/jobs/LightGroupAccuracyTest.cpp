@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "jobs/LightGroupAccuracy.h"
+#include "measure/LightGroupAccuracy.h"
 #include "jobs/RenderJob.h"
 #include "jobs/LightGroupsTestSupport.h"
 

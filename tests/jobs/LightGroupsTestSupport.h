@@ -15,7 +15,7 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "cli/RunCommand.h"
 
 namespace bandlight::test

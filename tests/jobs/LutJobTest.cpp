@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 #include "jobs/LutJob.h"
 #include "jobs/JobsTestSupport.h"
 

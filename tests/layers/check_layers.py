@@ -28,11 +28,16 @@ BELOW = {
     "plugin": ["spectral", "transforms", "luts"],
     "imageio": ["spectral", "transforms", "luts", "plugin"],
     "farm": ["spectral"],
-    "imaging": ["spectral", "transforms", "luts", "plugin", "imageio"],
-    "measure": ["spectral", "transforms", "luts", "plugin", "imageio", "imaging"],
-    "report": ["spectral", "transforms", "luts", "plugin", "imageio"],
-    "jobs": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm", "imaging",
-             "measure", "report"],
+    "requests": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm"],
+    "imaging": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm",
+                "requests"],
+    "camera": ["spectral", "transforms", "luts", "plugin", "imageio", "farm", "requests"],
+    "report": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm",
+               "requests"],
+    "measure": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm",
+                "requests", "imaging", "report"],
+    "jobs": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm", "requests",
+             "imaging", "camera", "measure", "report"],
 }
 # The faces: they may include every library layer, and never each other.
 FACES = ["cli", "python/src", "bench"]

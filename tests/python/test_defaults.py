@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Every keyword default of the Python module is the defaults table's value
-(transforms/Defaults.h and jobs/Defaults.h), and the type stubs state the
+(transforms/Defaults.h and requests/Defaults.h), and the type stubs state the
 same defaults: the command, the C++ requests and Python cannot drift apart.
 
 The table is read from the headers themselves; each keyword that has a value
@@ -58,7 +58,7 @@ NOT_SETTINGS = {("Spectrum", "name")}
 def table():
     """NAME -> value of every `inline constexpr` entry of the two headers."""
     out = {}
-    for header in ("transforms/Defaults.h", "jobs/Defaults.h"):
+    for header in ("transforms/Defaults.h", "requests/Defaults.h"):
         text = (SOURCE_DIR / header).read_text()
         for m in re.finditer(r"inline constexpr (?:const char\*|int|double) (\w+) = ([^;]+);",
                              text):

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "farm/Reporter.h"
-#include "jobs/SpectralJob.h"
+#include "imaging/SpectralImages.h"
 
 namespace bandlight::jobs
 {
@@ -30,7 +30,7 @@ struct LightGroupAccuracyRow
     double globalP95 = 0.0;
     double groupsMean = 0.0;  ///< ΔE00 with each group relit on its own
     double groupsP95 = 0.0;
-    double globalSeconds = 0.0;  ///< wall time of the apply, file to file
+    double globalSeconds = 0.0;  ///< wall time of the relight in memory
     double groupsSeconds = 0.0;
 };
 
@@ -38,7 +38,7 @@ struct LightGroupAccuracyResult
 {
     std::vector<LightGroupAccuracyRow> rows;
     double noChangeMean = 0.0;     ///< ΔE00 of the beauty as it is
-    double spectralSeconds = 0.0;  ///< the exact relight, file to file
+    double spectralSeconds = 0.0;  ///< the exact relight: spectra read and relit
     size_t pixels = 0;             ///< pixels measured (those with light)
     std::string globalFrom;        ///< the mixes the global look goes between
     std::string globalTo;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/SpectralAccuracy.h"
+#include "measure/SpectralAccuracy.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The accuracy job's text report: one table per plate convention and set.
+// The accuracy result's text report (one table per plate convention and
+// set) and its JSON document.
 #include <cstdio>
 #include <sstream>
 
-#include "jobs/AccuracyJob.h"
+#include <nlohmann/json.hpp>
+
+#include "measure/AccuracyRun.h"
 #include "measure/detail/AccuracySummary.h"
 
 namespace bandlight::jobs
@@ -273,6 +276,29 @@ void WriteCost(std::ostream& out, const AccuracyResult& result)
     }
 }
 
+/// Accuracy rows as the JSON document's arrays; "camera" is the row's
+/// simulation kind (PlateSourceName).
+nlohmann::ordered_json RowsJson(const std::vector<AccuracyRow>& from)
+{
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (const AccuracyRow& r : from)
+    {
+        a.push_back({{"method", r.method},
+                     {"from", r.from},
+                     {"to", r.to},
+                     {"set", r.set},
+                     {"plates", r.plates},
+                     {"camera", PlateSourceName(r.source)},
+                     {"exposure", r.exposure},
+                     {"shipped", r.shipped},
+                     {"mean", r.mean},
+                     {"p95", r.p95},
+                     {"max", r.max},
+                     {"worst_sample", r.worstSample}});
+    }
+    return a;
+}
+
 }  // namespace
 
 std::string AccuracyReport(const AccuracyResult& result)
@@ -285,6 +311,54 @@ std::string AccuracyReport(const AccuracyResult& result)
     }
     WriteCost(out, result);
     return out.str();
+}
+
+std::string AccuracyDocument(const AccuracyResult& result)
+{
+    const AccuracyOptions& options = result.options;
+    nlohmann::ordered_json j;
+    if (options.camera)
+    {
+        j["camera"] = {{"name", options.camera->name()},
+                       {"file", result.cameraFile},
+                       {"idt_light", options.idtLightName}};
+    }
+    else
+    {
+        j["camera"] = nullptr;
+    }
+    j["rows"] = RowsJson(result.rows);
+    j["cross_validation"] = RowsJson(result.crossValidation);
+    j["floor"] = RowsJson(result.floor);
+    j["cost"] = nlohmann::ordered_json::array();
+    for (const CostRow& c : result.cost)
+    {
+        j["cost"].push_back({{"method", c.method},
+                             {"form", c.formName()},
+                             {"ns_per_pixel", c.nsPerPixel},
+                             {"mpixel_per_s", 1e3 / c.nsPerPixel},
+                             {"threads", c.threads}});
+    }
+    j["setup_cost"] = nlohmann::ordered_json::array();
+    for (const SetupCost& s : result.setupCost)
+    {
+        j["setup_cost"].push_back({{"what", s.what}, {"seconds", s.seconds}});
+    }
+    if (!result.heatmaps.empty())
+    {
+        j["heatmaps"] = nlohmann::ordered_json::array();
+        for (const HeatmapSummary& h : result.heatmaps)
+        {
+            j["heatmaps"].push_back({{"image", h.image},
+                                     {"method", h.method},
+                                     {"mean", h.mean},
+                                     {"p95", h.p95},
+                                     {"max", h.max},
+                                     {"exr", h.exr},
+                                     {"png", h.png}});
+        }
+    }
+    return j.dump(2);
 }
 
 }  // namespace bandlight::jobs

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/Inputs.h"
+#include "requests/Inputs.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "jobs/Defaults.h"
+#include "requests/Defaults.h"
 #include "plugin/ConfigReferences.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
@@ -22,10 +22,11 @@ namespace bandlight::jobs
 
 namespace
 {
+/// A path names a file when anything is there (asked without opening it: a
+/// pipe is then refused by the reader, not waited on).
 bool FileExists(const std::string& path)
 {
-    std::ifstream f(path);
-    return bool(f);
+    return PathExists(path);
 }
 
 std::string Upper(std::string s)

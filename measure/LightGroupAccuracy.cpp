@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "jobs/LightGroupAccuracy.h"
-
-#include <unistd.h>
+#include "measure/LightGroupAccuracy.h"
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 
-#include "jobs/ApplyJob.h"
 #include "imaging/ImageApply.h"
 #include "imaging/LightGroups.h"
+#include "imaging/RelightForms.h"
+#include "imaging/SpectralGroups.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/RgbSpaces.h"
@@ -45,38 +43,12 @@ std::vector<Vec3> Layer(const ImageData& image, const std::string& prefix)
     return v;
 }
 
-ImageData ReadWhole(const std::string& path)
-{
-    ImageData d;
-    ThrowIfFailed(ImageFiles().read(path, d, true));
-    return d;
-}
-
 /// Mean and 95th percentile.
 std::pair<double, double> Summary(std::vector<double> v)
 {
     const Statistics s = Summarise(std::move(v));
     return {s.mean, s.p95};
 }
-
-/// A temporary folder for the run's files, removed with it.
-struct Scratch
-{
-    std::string dir;
-    Scratch()
-    {
-        dir = (std::filesystem::temp_directory_path() /
-               (".bandlight-lightgroups-" + std::to_string(::getpid()) + "-" +
-                std::to_string(std::chrono::steady_clock::now().time_since_epoch().count())))
-                  .string();
-        std::filesystem::create_directories(dir);
-    }
-    ~Scratch()
-    {
-        std::error_code ec;
-        std::filesystem::remove_all(dir, ec);
-    }
-};
 
 double Seconds(std::chrono::steady_clock::time_point t0)
 {
@@ -165,20 +137,24 @@ struct Reference
     }
 };
 
-Reference RelightExactly(const LightGroupAccuracyRequest& r, const Scratch& scratch,
-                         const Mat3& toXyz, Reporter& reporter, LightGroupAccuracyResult& result)
+Reference RelightExactly(const LightGroupAccuracyRequest& r, const ImageData& input,
+                         const Mat3& toXyz, LightGroupAccuracyResult& result)
 {
-    SpectralRequest exact;
-    exact.files.input = r.image;
-    exact.files.output = scratch.dir + "/exact.exr";
-    exact.options.workingSpace = r.workingSpace;
-    exact.options.plates.plates = "lit";
-    exact.options.lightGroups = r.changes;
-    exact.threads = r.threads;
+    SpectralOptions exact;
+    exact.workingSpace = r.workingSpace;
+    exact.plates.plates = "lit";
+    exact.lightGroups = r.changes;
     const auto t0 = std::chrono::steady_clock::now();
-    ConvertSpectralImages(exact, reporter);
+    const SpectralImage image = ReadSpectralImage(r.image, exact);
+    const GroupConversion relit =
+        ConvertLightGroups(r.image, image, input.attributes, exact, r.threads);
     result.spectralSeconds = Seconds(t0);
-    Reference ref{Layer(ReadWhole(exact.files.output), ""), toXyz, Vec3::Zero()};
+    std::vector<Vec3> rgb(relit.beauty.size() / 3);
+    for (size_t p = 0; p < rgb.size(); ++p)
+    {
+        rgb[p] = Vec3(relit.beauty[3 * p], relit.beauty[3 * p + 1], relit.beauty[3 * p + 2]);
+    }
+    Reference ref{std::move(rgb), toXyz, Vec3::Zero()};
     double white = 0.0;
     for (const Vec3& v : ref.rgb)
     {
@@ -192,7 +168,8 @@ Reference RelightExactly(const LightGroupAccuracyRequest& r, const Scratch& scra
     return ref;
 }
 
-/// An apply's wall time (file to file) and its output's ΔE00.
+/// An apply's wall time (in memory: the pixels of the image as read, no
+/// files) and its output's ΔE00.
 struct ApplyScore
 {
     double seconds = 0.0;
@@ -200,50 +177,57 @@ struct ApplyScore
     double p95 = 0.0;
 };
 
-ApplyScore TimedApply(const ApplyRequest& apply, const Reference& reference)
+template <class Apply>
+ApplyScore TimedApply(const ImageData& input, const Reference& reference, const Apply& apply)
 {
     ApplyScore score;
+    ImageData image = input;
     const auto t0 = std::chrono::steady_clock::now();
-    ApplyImages(apply);
+    apply(image);
     score.seconds = Seconds(t0);
-    std::tie(score.mean, score.p95) = Summary(reference.deltaE(Layer(ReadWhole(apply.output), "")));
+    std::tie(score.mean, score.p95) = Summary(reference.deltaE(Layer(image, "")));
     return score;
 }
 
-/// One method: one global look on the beauty, then a look per group.
+/// One method: one global look on the beauty, then a look per group, as
+/// `apply` relights them (the same forms and pixels, imaging/).
 LightGroupAccuracyRow MeasureMethod(const LightGroupAccuracyRequest& r, const std::string& method,
-                                    const Mixes& mixes, const Scratch& scratch,
-                                    const Reference& reference)
+                                    const Mixes& mixes, const ImageData& input,
+                                    const Reference& reference, Reporter& reporter)
 {
     LightGroupAccuracyRow row;
     row.method = method;
-    ApplyRequest global;
-    global.input = r.image;
-    global.output = scratch.dir + "/global.exr";
-    global.threads = r.threads;
     RelightRequest change;
     change.src = mixes.from;
     change.dst = mixes.to;
     change.method = method;
     change.workingSpace = r.workingSpace;
     change.plates.plates = "lit";
-    global.relight = change;
-    const ApplyScore globalScore = TimedApply(global, reference);
+    ImageColourRequest colour;
+    colour.working = &change.working();
+    const BufferWork global = MakeRelightForm(change, reporter).work(r.threads);
+    const ApplyScore globalScore = TimedApply(input, reference, [&](ImageData& image)
+                                              { ApplyToImageData(global, image, r.image, colour); });
     row.globalSeconds = globalScore.seconds;
     row.globalMean = globalScore.mean;
     row.globalP95 = globalScore.p95;
 
-    ApplyRequest groups = global;
-    groups.output = scratch.dir + "/groups.exr";
-    groups.relight.reset();
+    LightGroupApply groups;
     for (const SpectralLightGroup& c : r.changes)
     {
         RelightRequest g = change;
         g.src = c.from;
         g.dst = c.to;
-        groups.lightGroups.push_back({c.group, g});
+        const Spectrum& a = g.src.spectrum;
+        const Spectrum& b = g.dst.spectrum;
+        // The same light: carried unchanged, as `apply` carries it.
+        groups.works[c.group] = a.sameGrid(b) && a.values() == b.values()
+                                    ? BufferWork()
+                                    : MakeRelightForm(g, reporter).work(r.threads);
     }
-    const ApplyScore groupsScore = TimedApply(groups, reference);
+    const ApplyScore groupsScore =
+        TimedApply(input, reference, [&](ImageData& image)
+                   { ApplyLightGroupsToImageData(groups, image, r.image, colour); });
     row.groupsSeconds = groupsScore.seconds;
     row.groupsMean = groupsScore.mean;
     row.groupsP95 = groupsScore.p95;
@@ -263,20 +247,19 @@ LightGroupAccuracyResult MeasureLightGroups(const LightGroupAccuracyRequest& r, 
     const RgbSpace& working = FindRgbSpace(r.workingSpace);
     const std::vector<std::string> methods = MethodsOf(r);
     CheckImageInput(r.image);
-    const ImageData input = ReadWhole(r.image);
+    const ImageData input = ReadImageData(r.image, true);
     RequireEveryGroup(r, FindLightGroups(r.image, input.channelNames, input.attributes));
     const Mat3 toXyz = RgbToXyzMatrix(working.chromaticities);
     LightGroupAccuracyResult result;
     const Mixes mixes = MixLights(r, input, toXyz, result);
 
-    Scratch scratch;
-    const Reference reference = RelightExactly(r, scratch, toXyz, reporter, result);
+    const Reference reference = RelightExactly(r, input, toXyz, result);
     const std::vector<double> none = reference.deltaE(Layer(input, ""));
     result.pixels = none.size();
     result.noChangeMean = Summary(none).first;
     for (const std::string& method : methods)
     {
-        result.rows.push_back(MeasureMethod(r, method, mixes, scratch, reference));
+        result.rows.push_back(MeasureMethod(r, method, mixes, input, reference, reporter));
         reporter.progress("light groups: " + method,
                           double(result.rows.size()) / double(methods.size()));
     }

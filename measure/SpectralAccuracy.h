@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "farm/Reporter.h"
-#include "jobs/SpectralJob.h"
+#include "imaging/SpectralImages.h"
 #include "spectral/AtomicFile.h"
 #include "transforms/SurfaceRenderer.h"
 
