@@ -10,6 +10,7 @@
 #include "imaging/SpectralGroups.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
+#include "spectral/Metrics.h"
 #include "spectral/RgbSpaces.h"
 #include "spectral/Statistics.h"
 
@@ -123,6 +124,10 @@ struct Reference
     /// ΔE00 of each lit pixel of `image` against the reference.
     std::vector<double> deltaE(const std::vector<Vec3>& image) const
     {
+        const MetricEntry& metric = Metrics().front();  // ΔE00, the default
+        MetricContext context;
+        context.rgbToXyz = toXyz;
+        context.whiteXyz = whiteXyz;
         std::vector<double> d;
         for (size_t p = 0; p < rgb.size(); ++p)
         {
@@ -130,8 +135,7 @@ struct Reference
             {
                 continue;  // no light: background
             }
-            d.push_back(DeltaE2000(XyzToLab(toXyz * image[p], whiteXyz),
-                                   XyzToLab(toXyz * rgb[p], whiteXyz)));
+            d.push_back(metric.compute(image[p], rgb[p], context));
         }
         return d;
     }
