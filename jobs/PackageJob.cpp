@@ -130,7 +130,7 @@ PackageResult MakePackage(const PackageRequest& request, Reporter&)
     for (const bool balanced : {false, true})
     {
         const OCIO::ConstConfigRcPtr config = balanced ? package.config : litPackage.config;
-        for (const char* method : {"band3", "bradford"})
+        for (const std::string& method : PackageMethodNames())
         {
             const std::string look = LookName(method, "A", "D65");
             OCIO::LookTransformRcPtr t = OCIO::LookTransform::Create();

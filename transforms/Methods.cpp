@@ -201,6 +201,8 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     bradford.configDefaults = {"bradford"};
     bradford.accuracyDefaults = {"bradford"};
     bradford.lightGroupDefaults = {"bradford"};
+    bradford.packageDefaults = {"bradford"};
+    bradford.packageRank = 2;
     all.push_back(bradford);
 
     MethodEntry cat02 =
@@ -222,6 +224,8 @@ void AddMatrixMethods(std::vector<MethodEntry>& all)
     band.usesBands = true;
     band.configDefaults = {"band3", "band3-wp"};
     band.accuracyDefaults = {"band3", "band3-wp", "band6", "band6-wp"};
+    band.packageDefaults = {"band3"};
+    band.packageRank = 1;
     all.push_back(band);
 
     MethodEntry fit3x3 =
@@ -473,6 +477,30 @@ const std::vector<std::string>& CameraMethodNames()
 const std::vector<std::string>& LightGroupMethodNames()
 {
     static const std::vector<std::string> names = Collect(&MethodEntry::lightGroupDefaults);
+    return names;
+}
+
+const std::vector<std::string>& PackageMethodNames()
+{
+    static const std::vector<std::string> names = []
+    {
+        std::vector<const MethodEntry*> ranked;
+        for (const MethodEntry& e : Methods())
+        {
+            if (!e.packageDefaults.empty())
+            {
+                ranked.push_back(&e);
+            }
+        }
+        std::stable_sort(ranked.begin(), ranked.end(), [](const MethodEntry* a, const MethodEntry* b)
+                         { return a->packageRank < b->packageRank; });
+        std::vector<std::string> out;
+        for (const MethodEntry* e : ranked)
+        {
+            out.insert(out.end(), e->packageDefaults.begin(), e->packageDefaults.end());
+        }
+        return out;
+    }();
     return names;
 }
 

@@ -187,6 +187,10 @@ struct MethodEntry
     /// The names `accuracy --light-group` compares (one global look against
     /// a look per group) when no methods are named.
     std::vector<const char*> lightGroupDefaults;
+    /// The names whose looks `package` applies to its sample chart, and
+    /// where they come in its list (1 first): the band model, then bradford.
+    std::vector<const char*> packageDefaults;
+    int packageRank = 0;
 
     /// The exact spectral answer, which the others are measured against.
     bool isReference() const noexcept { return exactness == MethodExactness::REFERENCE; }
@@ -243,6 +247,10 @@ const std::vector<std::string>& CameraMethodNames();
 /// The methods `accuracy --light-group` measures when none are named:
 /// bradford, cat02, fit3x3, rootpoly.
 const std::vector<std::string>& LightGroupMethodNames();
+
+/// The methods whose looks `package` applies to its sample chart: band3
+/// (the band model) and bradford.
+const std::vector<std::string>& PackageMethodNames();
 
 /// Every method name a user can give, as help text: "none, vonkries, ...,
 /// rootpoly-camera (with {camera})" (a ParameterError template).
