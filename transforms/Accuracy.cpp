@@ -1,20 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// The default comparison, and MeasureAccuracy: every method on the plates of
+// each simulation kind (the observer's colour, a camera's record through its
+// IDT), in each plate convention and form, at every exposure. What the
+// accuracy measures share is transforms/AccuracyScoring.cpp; the fitted
+// methods' measures (CrossValidate, MeasureFloor) are
+// transforms/AccuracyFitted.cpp.
 #include "transforms/Accuracy.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <iterator>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 #include <Eigen/LU>
 
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
-#include "spectral/Parallel.h"
 #include "transforms/Upsampler.h"
+#include "transforms/detail/AccuracyParts.h"
 
 namespace bandlight
 {
@@ -35,157 +38,13 @@ AccuracyOptions DefaultAccuracyOptions()
 namespace
 {
 
-/// ΔE00 of predicted against reference colours (working RGB under `to`).
-struct Errors
-{
-    double mean = 0.0, p95 = 0.0, max = 0.0;
-    std::string worst;
-};
-
-/// How predictions are judged: their RGB → XYZ and the L*a*b* white.
-struct Judge
-{
-    Mat3 rgbToXyz;
-    Vec3 white;
-};
-
-Judge LitJudge(const SurfaceRenderer& to)
-{
-    return {to.rgbToXyz(), to.rgbToXyz() * to.white()};
-}
-
-Errors Score(const Judge& judge, const std::vector<Vec3>& predicted,
-             const std::vector<Vec3>& reference, const std::vector<NamedSpectrum>& names)
-{
-    const Vec3& white = judge.white;
-    std::vector<double> de;
-    Errors e;
-    double worst = -1.0;
-    for (size_t k = 0; k < reference.size(); ++k)
-    {
-        const Vec3 p = predicted[k].allFinite() ? predicted[k] : Vec3(1e6, -1e6, 1e6);
-        const double d = DeltaE2000(XyzToLab(judge.rgbToXyz * p, white),
-                                    XyzToLab(judge.rgbToXyz * reference[k], white));
-        de.push_back(d);
-        if (d > worst)
-        {
-            worst = d;
-            e.worst = names[k].name;
-        }
-    }
-    const Statistics s = Summarise(std::move(de));
-    e.mean = s.mean;
-    e.p95 = s.p95;
-    e.max = s.max;
-    return e;
-}
-
-AccuracyRow MakeRow(const std::string& method, const Light& from, const Light& to,
-                    const std::string& set, double exposure, bool shipped, const Errors& e,
-                    const std::string& plates = "lit", PlateSource source = PlateSource::CIE)
-{
-    AccuracyRow r;
-    r.plates = plates;
-    r.source = source;
-    r.method = method;
-    r.from = from.name;
-    r.to = to.name;
-    r.set = set;
-    r.exposure = exposure;
-    r.shipped = shipped;
-    r.mean = e.mean;
-    r.p95 = e.p95;
-    r.max = e.max;
-    r.worstSample = e.worst;
-    return r;
-}
-
-struct Pair
-{
-    size_t from, to;
-};
-
-std::vector<Pair> Pairs(const AccuracyOptions& o)
-{
-    std::vector<Pair> pairs;
-    for (size_t i = 0; i < o.lights.size(); ++i)
-    {
-        for (size_t j = 0; j < o.lights.size(); ++j)
-        {
-            if (o.forwardOnly ? i < j : i != j)
-            {
-                pairs.push_back({i, j});
-            }
-        }
-    }
-    return pairs;
-}
-
-/// Runs `perPair(pair, rows)` for every pair on all cores, rows in pair order.
-std::vector<AccuracyRow> ForEachPair(
-    const AccuracyOptions& o, const std::function<void(double)>& progress,
-    const std::function<void(const Light&, const Light&, std::vector<AccuracyRow>&)>& perPair)
-{
-    const std::vector<Pair> pairs = Pairs(o);
-    std::vector<std::vector<AccuracyRow>> byPair(pairs.size());
-    std::atomic<size_t> next{0};
-    // Counted and reported under one lock, so progress arrives as 1/n, 2/n,
-    // ... in order whichever thread finishes first (counted apart from the
-    // report, two threads' reports could cross, and a step be lost).
-    std::mutex reportMutex;
-    size_t done = 0;
-    ParallelRun(0, pairs.size(),
-                [&]
-                {
-                    for (size_t p; (p = next++) < pairs.size();)
-                    {
-                        perPair(o.lights[pairs[p].from], o.lights[pairs[p].to], byPair[p]);
-                        std::lock_guard<std::mutex> lock(reportMutex);
-                        ++done;
-                        if (progress)
-                        {
-                            progress(double(done) / double(pairs.size()));
-                        }
-                    }
-                });
-    std::vector<AccuracyRow> rows;
-    for (auto& r : byPair)
-    {
-        rows.insert(rows.end(), r.begin(), r.end());
-    }
-    return rows;
-}
-
-/// The plate conventions' matrices for one pair.
-struct PairPlates
-{
-    Plates plates;
-    Mat3 balanceFrom = Mat3::Identity();  ///< lit under `from` → this convention's plate
-    Mat3 balanceTo = Mat3::Identity();    ///< the truth under `to` → this convention's reference
-    Judge judge;
-};
-
-PairPlates MakePairPlates(const Plates& p, const Light& from, const Light& to,
-                          const SurfaceRenderer& r2, const RgbSpace& working, Observer observer)
-{
-    PairPlates out{p, Mat3::Identity(), Mat3::Identity(), LitJudge(r2)};
-    if (p.balanced())
-    {
-        out.balanceFrom = BalanceMatrix(from.spectrum, working, p.adaptation, observer);
-        out.balanceTo = BalanceMatrix(to.spectrum, working, p.adaptation, observer);
-        out.judge = {r2.rgbToXyz(), WorkingWhiteXyz(working)};
-    }
-    return out;
-}
-
-MethodSpec WithPlates(MethodSpec m, const Plates& p, const AccuracyOptions& o)
-{
-    m.plates = p;
-    m.camera = o.camera;
-    m.idtLightName = o.idtLightName;
-    m.idtLight = o.idtLight;
-    return m;
-}
+using detail::Errors;
+using detail::ForEachPair;
+using detail::MakePairPlates;
+using detail::MakeRow;
+using detail::PairPlates;
+using detail::Score;
+using detail::WithPlates;
 
 /// How a simulation kind's plates are made: the observer's colour, or a
 /// camera's record through the IDT fitted for one light.
@@ -607,27 +466,6 @@ std::string ThroughLitLooksKey(const Plates& balanced)
     return balanced.key() + "-through-lit-looks";
 }
 
-std::string InSampleSetName()
-{
-    return "training, in-sample";
-}
-
-std::string CrossValidatedSetName(int folds)
-{
-    return "training, " + std::to_string(folds) + "-fold";
-}
-
-const std::vector<std::string>& FloorMethodNames()
-{
-    static const std::vector<std::string> names = {"floor-3x3", "floor-rootpoly"};
-    return names;
-}
-
-size_t PairCount(const AccuracyOptions& options)
-{
-    return Pairs(options).size();
-}
-
 std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
                                          const std::function<void(double)>& progress)
 {
@@ -640,108 +478,6 @@ std::vector<AccuracyRow> MeasureAccuracy(const AccuracyOptions& o,
     return ForEachPair(o, progress,
                        [&run](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
                        { MeasurePair(run, from, to, rows); });
-}
-
-std::vector<AccuracyRow> CrossValidate(const AccuracyOptions& o, int folds)
-{
-    const RgbSpace& working = FindRgbSpace(o.workingSpace);
-    std::vector<MethodSpec> methods;
-    for (const std::string& m : o.methods)
-    {
-        const MethodSpec spec = ParseMethod(m);
-        if (spec.entry().takesTraining)
-        {
-            methods.push_back(spec);
-        }
-    }
-    if (methods.empty() || folds < 2)
-    {
-        return {};
-    }
-    const std::string inSample = InSampleSetName();
-    const std::string crossName = CrossValidatedSetName(folds);
-    return ForEachPair(
-        o, {},
-        [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
-        {
-            const SurfaceRenderer r1(from.spectrum, working, o.observer);
-            const SurfaceRenderer r2(to.spectrum, working, o.observer);
-            for (const Plates& plates : o.plates)
-            {
-                const PairPlates pp = MakePairPlates(plates, from, to, r2, working, o.observer);
-                for (const MethodSpec& parsed : methods)
-                {
-                    const MethodSpec method = WithPlates(parsed, plates, o);
-                    const std::vector<NamedSpectrum>& all = TrainingOf(method);
-                    const auto evaluate = [&](const MethodSpec& fitted,
-                                              const std::vector<NamedSpectrum>& test,
-                                              std::vector<Vec3>& predicted, std::vector<Vec3>& ref)
-                    {
-                        const Relighter relight(from, to, fitted, working, o.observer);
-                        for (const NamedSpectrum& t : test)
-                        {
-                            const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
-                            predicted.push_back(relight.apply(pp.balanceFrom * r1.render(r)));
-                            ref.push_back(pp.balanceTo * r2.render(r));
-                        }
-                    };
-                    {
-                        MethodSpec fitted = method;
-                        fitted.training = all;
-                        std::vector<Vec3> predicted, ref;
-                        evaluate(fitted, all, predicted, ref);
-                        rows.push_back(MakeRow(method.name, from, to, inSample, 1.0, false,
-                                               Score(pp.judge, predicted, ref, all), plates.key()));
-                    }
-                    // Folds by position (every folds-th sample), the same for every pair.
-                    std::vector<Vec3> predicted, ref;
-                    std::vector<NamedSpectrum> order;
-                    for (int f = 0; f < folds; ++f)
-                    {
-                        MethodSpec fitted = method;
-                        std::vector<NamedSpectrum> test;
-                        for (size_t i = 0; i < all.size(); ++i)
-                        {
-                            (int(i % size_t(folds)) == f ? test : fitted.training)
-                                .push_back(all[i]);
-                        }
-                        evaluate(fitted, test, predicted, ref);
-                        order.insert(order.end(), test.begin(), test.end());
-                    }
-                    rows.push_back(MakeRow(method.name, from, to, crossName, 1.0, false,
-                                           Score(pp.judge, predicted, ref, order), plates.key()));
-                }
-            }
-        });
-}
-
-std::vector<AccuracyRow> MeasureFloor(const AccuracyOptions& o)
-{
-    const RgbSpace& working = FindRgbSpace(o.workingSpace);
-    return ForEachPair(
-        o, {},
-        [&](const Light& from, const Light& to, std::vector<AccuracyRow>& rows)
-        {
-            const SurfaceRenderer r1(from.spectrum, working, o.observer);
-            const SurfaceRenderer r2(to.spectrum, working, o.observer);
-            for (const ReflectanceSet& set : o.sets)
-            {
-                const Mat3 m = FitLabMatrix(r1, r2, set.samples);
-                const RootPolynomial rp = FitRootPolynomial(r1, r2, set.samples, 2);
-                std::vector<Vec3> by3x3, byRoot, ref;
-                for (const NamedSpectrum& t : set.samples)
-                {
-                    const SurfaceRenderer::Samples r = SurfaceRenderer::Sample(t.spectrum);
-                    by3x3.push_back(m * r1.render(r));
-                    byRoot.push_back(rp.apply(r1.render(r)));
-                    ref.push_back(r2.render(r));
-                }
-                rows.push_back(MakeRow(FloorMethodNames()[0], from, to, set.name, 1.0, false,
-                                       Score(LitJudge(r2), by3x3, ref, set.samples)));
-                rows.push_back(MakeRow(FloorMethodNames()[1], from, to, set.name, 1.0, false,
-                                       Score(LitJudge(r2), byRoot, ref, set.samples)));
-            }
-        });
 }
 
 }  // namespace bandlight

@@ -2,8 +2,10 @@
 #pragma once
 
 // The pieces configs are put together with, shared by the config builders
-// (plugin/ConfigBuilder.cpp) and the input colour spaces
-// (plugin/ConfigInputSpaces.cpp). Not installed.
+// (BuildConfig in plugin/ConfigBuilder.cpp, ExtendConfig in
+// plugin/ConfigExtension.cpp), the input colour spaces
+// (plugin/ConfigInputSpaces.cpp) and the writer (plugin/ConfigWriter.cpp).
+// Not installed.
 
 #include <string>
 #include <vector>
@@ -33,6 +35,28 @@ bool IsV1(const OCIO::Config& config);
 /// `t` as a FileTransform of a CLF file the package carries (luts/<name>.clf).
 OCIO::TransformRcPtr AsLutFile(ConfigPackage& package, const std::string& name,
                                const OCIO::GroupTransformRcPtr& t);
+
+/// The band model's band space: a base that has it already (a bandlight
+/// config) does not get it again.
+inline constexpr const char* kBandSpaceName = "Bands VB-VG-VR (lecture)";
+
+/// Throws Exception unless the options make a config: at least two lights of
+/// distinct names and one method (with the camera it needs), or input
+/// spaces alone.
+void RequireLights(const ConfigOptions& o);
+
+/// The band space (kBandSpaceName): the lecture's band values to the working
+/// space, then to the reference (`workingToReference`, none when the working
+/// space is the reference). In a v1 config the matrix is a CLF file.
+void AddBandSpace(ConfigPackage& package, const RgbSpace& working, Observer observer,
+                  OCIO::TransformRcPtr workingToReference);
+
+/// The looks, one per method and ordered pair of distinct lights, processed
+/// in `processSpace`, and (OCIO v2) each the same as a named transform. A
+/// linear method is an inline matrix, the rest (and all in a v1 config) CLF
+/// files. Throws Exception for a name made twice or one the config has.
+void AddLooks(ConfigPackage& package, const ConfigOptions& o, const RgbSpace& working,
+              const std::string& processSpace);
 
 /// The input colour spaces (camera IDTs), each to the config's reference:
 /// its matrix into its space, that space into the working space, then the
