@@ -6,7 +6,9 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -81,11 +83,49 @@ CameraSensitivities Finish(CameraSensitivities cam, const std::string& source)
 
 using Json = nlohmann::json;
 
+/// Throws when an object of the document names a key twice: JSON parsers
+/// keep the last value, so a camera file's repeated wavelength would
+/// silently replace the first.
+class RepeatedKeys
+{
+public:
+    explicit RepeatedKeys(std::string source) : m_source(std::move(source)) {}
+
+    bool operator()(int, Json::parse_event_t event, Json& parsed)
+    {
+        switch (event)
+        {
+            case Json::parse_event_t::object_start:
+                m_keys.emplace_back();
+                break;
+            case Json::parse_event_t::object_end:
+                m_keys.pop_back();
+                break;
+            case Json::parse_event_t::key:
+                if (!m_keys.empty() && !m_keys.back().insert(parsed.get<std::string>()).second)
+                {
+                    throw Exception(m_source + ": the key \"" +
+                                    OneLine(parsed.get<std::string>(), 60) +
+                                    "\" appears twice in one object (a wavelength given twice?): "
+                                    "each wavelength once");
+                }
+                break;
+            default:
+                break;
+        }
+        return true;
+    }
+
+private:
+    std::string m_source;
+    std::vector<std::set<std::string>> m_keys;
+};
+
 Json ParseJson(const std::string& text, const std::string& source)
 {
     try
     {
-        return Json::parse(text);
+        return Json::parse(text, RepeatedKeys(source));
     }
     catch (const Json::parse_error& e)
     {
@@ -209,7 +249,7 @@ SensitivityRow ReadRow(const std::string& key, const Json& v, const std::array<i
     for (size_t k = 0; k < 3; ++k)
     {
         const Json& x = v.at(k);
-        if (!x.is_number() || !std::isfinite(x.get<double>()) || std::fabs(x.get<double>()) > 1e30)
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
         {
             BadRow(source, key, "value " + OneLine(x.dump(), 60) + " is not a finite number");
         }
@@ -228,6 +268,11 @@ double SortOnRegularGrid(std::vector<SensitivityRow>& rows, const std::string& s
     for (size_t i = 1; i < rows.size(); ++i)
     {
         const double d = rows[i].first - rows[i - 1].first;
+        if (d == 0.0)
+        {
+            throw Exception(source + ": the wavelength " + Num(rows[i].first) +
+                            " nm is given twice: each wavelength once");
+        }
         if (!(d > 0.0) || std::fabs(d - step) > 1e-6 * std::max(1.0, step))
         {
             throw Exception(source + ": wavelengths " + Num(rows[i - 1].first) + " and " +

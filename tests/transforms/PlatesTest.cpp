@@ -395,6 +395,18 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
             R"({"spectral_data": {"data": {"main": {"400": [1, -0.5, 1], "410": [0, 1, 1]}}}})",
             "negative.json"),
         Contains("negative.json: the green channel responds -0.5 at 400 nm"));
+    // A wavelength given twice: JSON keeps the last value, so it is refused
+    // before any value is lost (the CSV reader refuses the same).
+    CHECK_THROWS_WITH(
+        ReadCameraText(R"({"spectral_data": {"data": {"main": {"400": [1, 0, 0], "500": [0, 1, 0],
+                          "400": [0, 0, 1]}}}})",
+                       "twice.json"),
+        Contains("twice.json: the key \"400\" appears twice"));
+    CHECK_THROWS_WITH(
+        ReadCameraText(R"({"spectral_data": {"data": {"main": {"400": [1, 0, 0], "400.0": [0, 1, 0],
+                          "500": [0, 0, 1]}}}})",
+                       "twice.json"),
+        Contains("twice.json: the wavelength 400 nm is given twice"));
     CHECK_THROWS_WITH(
         ReadCameraText("nm,a,b\n400,1,0\n500,0,1\n", "two.csv"),
         Contains("two.csv: a camera file holds three spectra (R, G, B), this one has 2"));
@@ -417,6 +429,41 @@ TEST_CASE("Camera files: rawtoaces JSON, CSV and CGATS, and clear errors", "[tra
     CHECK_THROWS_WITH(CameraShot(trace, BuiltinIlluminant("D65")),
                       Contains("trace.csv: camera: its blue channel records nothing under this "
                                "light"));
+}
+
+TEST_CASE("A camera file's scale does not change its IDT, up to 1e300 and down to 1e-300",
+          "[transforms][camera]")
+{
+    // docs/robustness.md: an IDT is the same for any scale of the
+    // sensitivities; a file in counts of 1e300 is read, not refused.
+    const auto file = [](double scale)
+    {
+        std::ostringstream j;
+        j.precision(17);
+        j << R"({"spectral_data": {"data": {"main": {)";
+        for (int nm = 380; nm <= 780; nm += 10)
+        {
+            const double x = (nm - 380) / 400.0;
+            const double r = std::exp(-std::pow((x - 0.75) / 0.12, 2));
+            const double g = std::exp(-std::pow((x - 0.45) / 0.12, 2));
+            const double b = std::exp(-std::pow((x - 0.2) / 0.1, 2));
+            j << (nm > 380 ? ", " : "") << '"' << nm << "\": [" << scale * r << ", " << scale * g
+              << ", " << scale * b << "]";
+        }
+        j << "}}}}";
+        return j.str();
+    };
+    const Spectrum d65 = BuiltinIlluminant("D65");
+    const RgbSpace& acescg = FindRgbSpace("acescg");
+    const Mat3 one = FitIdt(SpectralCamera(ReadCameraText(file(1.0), "one.json")), d65, acescg,
+                            AdaptationMethod::CAT02);
+    for (const double scale : {1e300, 1e-300, 3.0})
+    {
+        INFO("scale " << scale);
+        const SpectralCamera scaled(ReadCameraText(file(scale), "scaled.json"));
+        const Mat3 b = FitIdt(scaled, d65, acescg, AdaptationMethod::CAT02);
+        CHECK((b - one).cwiseAbs().maxCoeff() < 1e-9 * one.cwiseAbs().maxCoeff());
+    }
 }
 
 TEST_CASE("rootpoly-camera needs a camera", "[transforms][camera]")
