@@ -170,7 +170,10 @@ std::vector<NamedSpectrum> ResolveReflectances(const std::string& nameOrFile, Re
 
 OCIO_NAMESPACE::ConstConfigRcPtr ReadConfigFile(const std::string& file, bool checkReferences)
 {
-    // OpenColorIO says only that it could not read the file; the errno says why.
+    // A pipe is refused before OpenColorIO opens it (it would wait for a
+    // writer); OpenColorIO says only that it could not read the file, the
+    // errno says why.
+    RequireRegularFile(file, "config");
     const int fileError = InputFileError(file);
     try
     {

@@ -21,6 +21,18 @@ bool PathExists(const std::string& path)
     return !path.empty() && ::stat(path.c_str(), &st) == 0;
 }
 
+void RequireRegularFile(const std::string& path, const std::string& what)
+{
+    struct stat st
+    {
+    };
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+    {
+        throw Exception(PathInMessage(path) + ": not a regular file (a " + what +
+                        " is a text file)");
+    }
+}
+
 int InputFileError(const std::string& path)
 {
     struct stat st

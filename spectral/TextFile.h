@@ -22,6 +22,12 @@ std::string ReadTextFile(const std::string& path, const std::string& what);
 /// not a regular file (ReadTextFile, InputFileError) before they open it.
 bool PathExists(const std::string& path);
 
+/// Throws Exception "PATH: not a regular file (a WHAT is a text file)" when
+/// something that is not a regular file or a folder is at `path` (a pipe,
+/// a device), asked without opening it: for files another library opens
+/// (OpenColorIO's configs), which would wait on a pipe for ever.
+void RequireRegularFile(const std::string& path, const std::string& what);
+
 /// 0 when `path` is a regular file that opens for reading (or a device or
 /// pipe, which is not opened), else the errno that says why not: ENOENT,
 /// EACCES, ENOTDIR, EISDIR for a directory. For files that another library

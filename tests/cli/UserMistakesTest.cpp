@@ -210,6 +210,49 @@ TEST_CASE("Images are read from regular files: a device or a FIFO is refused at 
     CHECK(!fs::exists(dir + "/out.exr"));
 }
 
+TEST_CASE("Every file a request names is refused at once when it is a FIFO", "[cli][mistakes]")
+{
+    // Opening a FIFO waits for a writer: each input is asked what it is
+    // before anything opens it. `timeout` turns a hang into a failure.
+    const std::string dir = Folder("fifos");
+    const std::string camera =
+        std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/arri_d21_380_780_5.json";
+    for (const char* name : {"light.csv", "config.ocio", "cfg/config.ocio", "cam.json"})
+    {
+        fs::create_directories(fs::path(dir + "/" + name).parent_path());
+        REQUIRE(::mkfifo((dir + "/" + name).c_str(), 0600) == 0);
+    }
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/materials_A.yaml' -o '" + dir +
+                      "/in.exr'")
+                .code == 0);
+    const std::string in = "'" + dir + "/in.exr' '" + dir + "/out.exr' ";
+    const struct
+    {
+        std::string args;
+        const char* says;
+    } cases[] = {
+        {"idt --camera '" + camera + "' --lights '" + dir + "/light.csv'", "not a regular file"},
+        {"idt --camera '" + camera + "' --lights A --training '" + dir + "/light.csv'",
+         "not a regular file"},
+        {"idt --camera '" + dir + "/cam.json' --lights A", "not a regular file"},
+        {"apply " + in + "--look x --config '" + dir + "/cfg'", "not a regular file"},
+        {"apply " + in + "--look x --config '" + dir + "/config.ocio'", "not a regular file"},
+        {"config --base '" + dir + "/config.ocio' --out '" + dir + "/extended'",
+         "not a regular file"},
+        {"apply " + in + "--from '" + dir + "/light.csv' --to D65", "not a regular file"},
+        {"apply " + in + "--light-group-file '" + dir + "/light.csv'", "not a regular file"},
+    };
+    for (const auto& c : cases)
+    {
+        INFO(c.args);
+        const Result r = Sh("timeout 20 '" + std::string(BANDLIGHT_EXE) + "' " + c.args);
+        CHECK(r.code != 124);  // not hung
+        CheckOneLine(r, c.says);
+    }
+    CHECK(!fs::exists(dir + "/out.exr"));
+    CHECK(!fs::exists(dir + "/extended"));
+}
+
 TEST_CASE("Skipping existing frames counts only regular files as finished", "[cli][mistakes]")
 {
     const std::string dir = Folder("skip_dir");
