@@ -167,6 +167,7 @@ void AddLightGroup(ApplyOptions& o, const CLI::App& cmd, const std::string& item
         group.to = value.substr(colon + 1);
         if (!method.empty())
         {
+            (void)ParseMethod(method);  // an unknown one is named at its line, now
             group.method = method;
         }
         const CLI::Option* plates = cmd.get_option_no_throw("--plates");
@@ -181,29 +182,59 @@ void AddLightGroup(ApplyOptions& o, const CLI::App& cmd, const std::string& item
 }
 
 /// The lines of --light-group-file after the command line's groups: one
-/// NAME=FROM:TO[@METHOD] (or NAME=LAYER) per line, # comments and blank
-/// lines skipped, each remembered with its line for the messages.
-void ReadLightGroupFile(ApplyOptions& o)
+/// NAME=FROM:TO[@METHOD] (or NAME=LAYER) per line, blank lines and comments
+/// skipped (a '#' that starts a line or follows a space or tab, to the end
+/// of the line), lines ended by LF, CRLF or CR alone; each remembered with
+/// its line for the messages.
+void ReadLightGroupFile(ApplyOptions& o, const CLI::App& cmd)
 {
     o.lightGroupSources.assign(o.lightGroups.size(), "");
     if (o.lightGroupFile.empty())
     {
+        if (cmd.count("--light-group-file") > 0)
+        {
+            throw ParameterError("{light_group_file} is an empty path: give the file of "
+                                 "NAME=FROM:TO lines");
+        }
         return;
     }
     std::string text = ReadTextFile(o.lightGroupFile, "light-group file");
     CheckUtf8Text(text, o.lightGroupFile);
-    std::istringstream in(text);
+    // CRLF and CR-only line ends (old Mac editors) as LF.
+    std::string lines;
+    lines.reserve(text.size());
+    for (size_t i = 0; i < text.size(); ++i)
+    {
+        if (text[i] == '\r')
+        {
+            lines += '\n';
+            i += i + 1 < text.size() && text[i + 1] == '\n' ? 1 : 0;
+        }
+        else
+        {
+            lines += text[i];
+        }
+    }
+    std::istringstream in(lines);
     std::string line;
     size_t number = 0;
     while (std::getline(in, line))
     {
         ++number;
-        const size_t first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
+        for (size_t hash = line.find('#'); hash != std::string::npos; hash = line.find('#', hash + 1))
+        {
+            if (hash == 0 || line[hash - 1] == ' ' || line[hash - 1] == '\t')
+            {
+                line.erase(hash);  // a comment, to the end of the line
+                break;
+            }
+        }
+        const size_t first = line.find_first_not_of(" \t");
+        if (first == std::string::npos)
         {
             continue;
         }
-        const size_t last = line.find_last_not_of(" \t\r");
+        const size_t last = line.find_last_not_of(" \t");
         o.lightGroups.push_back(line.substr(first, last - first + 1));
         o.lightGroupSources.push_back(SourcePosition(o.lightGroupFile, number));
     }
@@ -232,13 +263,30 @@ void AddLightGroups(ApplyOptions& o, const CLI::App& cmd, jobs::Reporter& report
             // A file's line: named by its position, not by the option.
             throw Exception(o.lightGroupSources[i] + ": " + e.spelled(Face::COMMAND));
         }
+        catch (const FileError& e)
+        {
+            if (o.lightGroupSources[i].empty())
+            {
+                throw;
+            }
+            throw Exception(o.lightGroupSources[i] + ": " + e.spelled(Face::COMMAND));
+        }
+        catch (const Exception& e)
+        {
+            if (o.lightGroupSources[i].empty())
+            {
+                throw;
+            }
+            // An unknown illuminant or method of a file's line: its position too.
+            throw Exception(o.lightGroupSources[i] + ": " + e.what());
+        }
     }
 }
 
 void RunApply(ApplyOptions& o, const CLI::App& cmd)
 {
     FrameSetReporter reporter;
-    ReadLightGroupFile(o);
+    ReadLightGroupFile(o, cmd);
     const std::vector<std::string> given = GivenRelightOptions(cmd);
     o.request.changeGiven = given;
     jobs::CheckLookAlone(o.request);

@@ -175,6 +175,20 @@ bool IsDisplayReferred(const ImageData& header)
     return IntegerChannels(header) || header.format == "png" || header.format == "jpeg";
 }
 
+void RequireNamedChannels(const std::string& path, const std::string& layers)
+{
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    const std::string ext = hasExtension ? Lower(path.substr(dot + 1)) : "";
+    if (ext != "exr" && ext != "sxr")
+    {
+        throw ParameterError(PathInMessage(path) + ": " + layers +
+                             " are named layers, and only an EXR keeps channel names (in this "
+                             "format they would become anonymous channels): write an .exr");
+    }
+}
+
 bool IsDisplayReferredFile(const std::string& path)
 {
     const size_t dot = path.find_last_of('.');

@@ -58,6 +58,12 @@ bool IsDisplayReferred(const ImageData& header);
 /// only (.png, .jpg, .gif, .bmp, .webp, …), by extension.
 bool IsDisplayReferredFile(const std::string& path);
 
+/// Throws ParameterError when `path`'s format keeps no channel names (every
+/// format but OpenEXR, by extension) and `layers` (what the output would
+/// hold: "light groups", "spectral channels") need them: "key.R" would come
+/// back as "channel3".
+void RequireNamedChannels(const std::string& path, const std::string& layers);
+
 /// Encoded pixels of `from` → linear `to`: the sRGB curve (when encoded),
 /// then the guarded matrix a bandlight config uses (Bradford between
 /// whites). nullptr when nothing changes.

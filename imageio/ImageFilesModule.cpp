@@ -97,6 +97,37 @@ void WriteParts(const std::string& path, const std::vector<OIIO::ImageSpec>& spe
                         PathInMessage(in) + " has " + std::to_string(specs.size()) +
                         " parts: " + names + " would be lost (write a multi-part EXR)");
     }
+    // Only OpenEXR keeps channel names: elsewhere (TIFF, PNG, ...) a layer
+    // such as a light group's "key.R" would come back as "channel3".
+    if (std::string(output->format_name()) != "openexr")
+    {
+        std::vector<std::string> named;
+        for (const OIIO::ImageSpec& spec : specs)
+        {
+            for (const std::string& n : spec.channelnames)
+            {
+                if (n != "R" && n != "G" && n != "B" && n != "A" && n != "Y")
+                {
+                    named.push_back(n);
+                }
+            }
+        }
+        if (!named.empty())
+        {
+            std::string list;
+            for (size_t i = 0; i < named.size() && i < 4; ++i)
+            {
+                list += (i ? ", " : "") + named[i];
+            }
+            if (named.size() > 4)
+            {
+                list += ", ... (" + std::to_string(named.size()) + " channels)";
+            }
+            throw Exception(PathInMessage(path) + ": a " + output->format_name() +
+                            " file keeps no channel names, so " + list +
+                            " would become anonymous channels: write an EXR, which keeps them");
+        }
+    }
     // The file itself was created above (or by the caller's OutputSet): what
     // fails here is the format refusing the image, not the file system.
     const auto failed = [&]

@@ -378,7 +378,15 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
                 }
             };
         }
-        RelightLightGroups(layout, works, pixels, width, height, channels, where);
+        const size_t unguarded =
+            RelightLightGroups(layout, works, pixels, width, height, channels, where);
+        if (unguarded > 0)
+        {
+            notes.push_back(where + ": " + std::to_string(unguarded) +
+                            " pixels held NaN or infinite values in the beauty or a group: "
+                            "NaN taken as -1e16 and infinity as +-1e16 before the relight, as "
+                            "every pixel path takes them, so every value written is finite");
+        }
         ++relitParts;
     };
     run(process);

@@ -13,6 +13,7 @@
 
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
+#include "transforms/IlluminantChange.h"
 
 namespace bandlight::jobs
 {
@@ -62,19 +63,16 @@ double BeautyPeak(const LightGroupLayout& layout, const float* pixels, size_t co
 /// What is wrong with a pixel of a light-group image, if anything.
 struct PixelFault
 {
-    const LightGroupLayer* nonFinite = nullptr;  ///< the first NaN or infinite group
-    int channel = -1;  ///< else the first channel whose groups exceed the beauty
-    float value = 0.0f;
+    int channel = -1;  ///< the first channel whose groups exceed the beauty
     double sum = 0.0, beauty = 0.0;
-    explicit operator bool() const { return nonFinite || channel >= 0; }
+    explicit operator bool() const { return channel >= 0; }
 };
 
-/// Checks one pixel: finite groups that do not sum past the beauty,
-/// channel by channel, in double. A non-finite beauty is carried: the
-/// groups say nothing about it. The sum alone decides most pixels (it is
-/// finite exactly when every group is; the tolerance only matters when it
-/// exceeds the beauty), so the culprit and the level are looked for only
-/// then.
+/// Checks one pixel: finite groups that do not sum past a finite beauty,
+/// channel by channel, in double. Non-finite values are no fault: they are
+/// guarded (GuardPixel) before the relight, as every pixel path guards them.
+/// The sum alone decides most pixels; the level is looked for only when it
+/// exceeds the beauty.
 PixelFault CheckPixel(const LightGroupLayout& layout, const float* v, double peak)
 {
     PixelFault fault;
@@ -86,24 +84,17 @@ PixelFault CheckPixel(const LightGroupLayout& layout, const float* v, double pea
             sum += v[g.rgb[c]];
         }
         const double beauty = v[layout.beauty[c]];
-        if (std::isfinite(sum) && !(sum > beauty))
+        if (!std::isfinite(sum) || !std::isfinite(beauty) || !(sum > beauty))
         {
             continue;
         }
         double partial = 0.0, level = std::abs(beauty);
         for (const LightGroupLayer& g : layout.groups)
         {
-            const float x = v[g.rgb[c]];
-            if (!std::isfinite(x))
-            {
-                fault.nonFinite = &g;
-                fault.value = x;
-                return fault;
-            }
-            partial += x;
+            partial += v[g.rgb[c]];
             level = std::max(level, std::abs(partial));
         }
-        if (std::isfinite(beauty) && sum - beauty > PartitionTolerance(level, peak, layout.half))
+        if (sum - beauty > PartitionTolerance(level, peak, layout.half))
         {
             fault.channel = c;
             fault.sum = sum;
@@ -114,16 +105,51 @@ PixelFault CheckPixel(const LightGroupLayout& layout, const float* v, double pea
     return fault;
 }
 
+/// Whether any value of the pixel's beauty or groups is NaN, infinite or
+/// beyond the guard (|x| > PIXEL_GUARD).
+bool Unguarded(const LightGroupLayout& layout, const float* v)
+{
+    const auto outside = [](float x) { return !(std::abs(double(x)) <= PIXEL_GUARD); };
+    for (int c = 0; c < 3; ++c)
+    {
+        if (outside(v[layout.beauty[c]]))
+        {
+            return true;
+        }
+        for (const LightGroupLayer& g : layout.groups)
+        {
+            if (outside(v[g.rgb[c]]))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+/// The pixel's beauty and groups through GuardPixel, the guard of every
+/// pixel path (NaN to −PIXEL_GUARD, ±Inf to ±PIXEL_GUARD).
+void GuardLayers(const LightGroupLayout& layout, float* v)
+{
+    const auto guard = [v](const int* rgb)
+    {
+        const Vec3 g = GuardPixel(Vec3(v[rgb[0]], v[rgb[1]], v[rgb[2]]));
+        for (int c = 0; c < 3; ++c)
+        {
+            v[rgb[c]] = float(g[c]);
+        }
+    };
+    guard(layout.beauty);
+    for (const LightGroupLayer& g : layout.groups)
+    {
+        guard(g.rgb);
+    }
+}
+
 /// The one line naming a pixel's fault, `file` and the pixel (x, y).
 std::string FaultMessage(const PixelFault& f, const std::string& file, size_t x, size_t y)
 {
     const std::string at = " at pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
-    if (f.nonFinite)
-    {
-        return file + ": light group '" + OneLine(f.nonFinite->name, 80) + "' is " +
-               (std::isnan(f.value) ? "NaN" : "infinite") + at + " (layer " +
-               OneLine(f.nonFinite->layer, 80) + ")";
-    }
     return file + ": the light groups sum to more than the beauty" + at + " (" +
            std::to_string(f.sum) + " against " + std::to_string(f.beauty) + " in " +
            "RGB"[f.channel] +
@@ -132,9 +158,9 @@ std::string FaultMessage(const PixelFault& f, const std::string& file, size_t x,
 }
 }  // namespace
 
-void RelightLightGroups(const LightGroupLayout& layout,
-                        const std::map<std::string, LightGroupWork>& works, float* pixels,
-                        long width, long height, int channels, const std::string& file)
+size_t RelightLightGroups(const LightGroupLayout& layout,
+                          const std::map<std::string, LightGroupWork>& works, float* pixels,
+                          long width, long height, int channels, const std::string& file)
 {
     const size_t w = size_t(std::max(width, 0L)), h = size_t(std::max(height, 0L));
     const size_t n = size_t(channels);
@@ -142,19 +168,25 @@ void RelightLightGroups(const LightGroupLayout& layout,
     // Every pixel checked before any changes; the first at fault is named,
     // whichever thread found it.
     size_t bad = w * h;
+    size_t unguarded = 0;
     std::mutex mu;
     ParallelFor(w * h, 0,
                 [&](size_t a, size_t b)
                 {
+                    size_t mine = 0;
                     for (size_t p = a; p < b; ++p)
                     {
+                        mine += Unguarded(layout, pixels + p * n) ? 1 : 0;
                         if (CheckPixel(layout, pixels + p * n, peak))
                         {
                             std::lock_guard<std::mutex> lock(mu);
                             bad = std::min(bad, p);
+                            unguarded += mine;
                             return;
                         }
                     }
+                    std::lock_guard<std::mutex> lock(mu);
+                    unguarded += mine;
                 });
     if (bad < w * h)
     {
@@ -173,7 +205,11 @@ void RelightLightGroups(const LightGroupLayout& layout,
                     {
                         for (size_t p = a; p < b; ++p)
                         {
-                            const float* v = block + p * n;
+                            float* v = block + p * n;
+                            if (unguarded > 0 && Unguarded(layout, v))
+                            {
+                                GuardLayers(layout, v);
+                            }
                             for (int c = 0; c < 3; ++c)
                             {
                                 double sum = 0.0;
@@ -210,6 +246,7 @@ void RelightLightGroups(const LightGroupLayout& layout,
                         }
                     });
     }
+    return unguarded;
 }
 
 }  // namespace bandlight::jobs

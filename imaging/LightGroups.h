@@ -82,18 +82,20 @@ LightGroupLayout FindLightGroups(const std::string& file,
 using LightGroupWork = std::function<void(float*, long, long, int, const int*)>;
 
 /// Relights the groups of an interleaved float image in place: checks that
-/// every group is finite and that the groups do not sum to more than the
-/// beauty beyond float noise (a file whose groups are no partition of the
-/// beauty), then applies each group's work to its channels (groups without
-/// one are carried unchanged) and writes the beauty as Σ relit groups +
-/// residual (beauty − Σ groups as read), summed in double. The works are
-/// called on blocks of whole rows, top to bottom. Channels other than the
-/// groups' and the beauty's R, G, B are not touched. Throws Exception
-/// naming `file`, the group and the first pixel at fault, before any pixel
-/// changes.
-void RelightLightGroups(const LightGroupLayout& layout,
-                        const std::map<std::string, LightGroupWork>& works, float* pixels,
-                        long width, long height, int channels, const std::string& file);
+/// the groups do not sum to more than the beauty beyond float noise (a file
+/// whose groups are no partition of the beauty), then applies each group's
+/// work to its channels (groups without one are carried unchanged) and
+/// writes the beauty as Σ relit groups + residual (beauty − Σ groups as
+/// read), summed in double. NaN and infinite values of the beauty or a group
+/// go through the guard of every pixel path first (GuardPixel: NaN to
+/// −1e16, ±Inf to ±1e16; docs/robustness.md), so every value written is
+/// finite; returns how many pixels held such values. The works are called
+/// on blocks of whole rows, top to bottom. Channels other than the groups'
+/// and the beauty's R, G, B are not touched. Throws Exception naming `file`
+/// and the first pixel at fault, before any pixel changes.
+size_t RelightLightGroups(const LightGroupLayout& layout,
+                          const std::map<std::string, LightGroupWork>& works, float* pixels,
+                          long width, long height, int channels, const std::string& file);
 
 /// The largest excess of Σ groups over the beauty a partition may show, for
 /// a pixel value `level` (max of |beauty| and Σ |group|) in an image whose

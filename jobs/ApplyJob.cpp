@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "farm/Frames.h"
+#include "imageio/ImageColour.h"
 #include "imaging/ImageApply.h"
 #include "imaging/LightGroups.h"
 #include "imaging/Mattes.h"
@@ -207,6 +208,10 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     }
     // Every path before any work: a run that cannot write fails at once.
     CheckFrameSetPaths(FrameSet(r));
+    if (!r.lightGroups.empty())
+    {
+        RequireNamedChannels(r.output, "light groups");
+    }
     if (!r.matte.empty() || r.insideRelight || r.outsideRelight || !r.insideLook.empty() ||
         !r.outsideLook.empty())
     {

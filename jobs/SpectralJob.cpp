@@ -10,6 +10,7 @@
 
 #include <Eigen/LU>
 
+#include "imageio/ImageColour.h"
 #include "imaging/ImageApply.h"
 #include "imaging/LightGroups.h"
 #include "imaging/SpectralGroups.h"
@@ -266,6 +267,10 @@ void WriteConvertedFrame(SpectralRun& run, const std::string& in, const std::str
 SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporter)
 {
     CheckSpectralRequest(r);  // before any file is read
+    if (!r.options.lightGroups.empty())
+    {
+        RequireNamedChannels(r.files.output, "light groups");
+    }
     SpectralRun run(r, reporter);
     const bool groups = !r.options.lightGroups.empty();
     const auto one = [&](const std::string& in, const std::string& out)

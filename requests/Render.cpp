@@ -4,6 +4,7 @@
 #include <cerrno>
 
 #include "farm/OutputPaths.h"
+#include "imageio/ImageColour.h"
 #include "render/SceneFile.h"
 #include "render/SceneRenderer.h"
 #include "spectral/Exception.h"
@@ -124,6 +125,10 @@ void CheckRenderOutputs(const PreparedRender& prepared)
     if (r.explain)
     {
         return;  // nothing is written
+    }
+    if (!r.out.empty() && (r.lightGroups || r.spectra))
+    {
+        RequireNamedChannels(r.out, r.lightGroups ? "light groups" : "spectral channels");
     }
     if (r.spectra)
     {

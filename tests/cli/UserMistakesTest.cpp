@@ -3,10 +3,12 @@
 // stderr and exit code 2 before any work, and nothing of theirs is lost.
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -253,6 +255,71 @@ TEST_CASE("Every file a request names is refused at once when it is a FIFO", "[c
     CHECK(!fs::exists(dir + "/extended"));
 }
 
+TEST_CASE("Named layers are written only to a format that keeps their names", "[cli][mistakes]")
+{
+    // A TIFF (or PNG) keeps no channel names: "key.R" would come back as
+    // "channel3", the groups anonymous. Refused before any work, naming EXR.
+    const std::string dir = Folder("named_layers");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/two_lights.yaml' --spectra "
+                      "--light-groups -o '" + dir + "/shot.exr'")
+                .code == 0);
+    const std::string in = "'" + dir + "/shot.exr' ";
+    CheckOneLine(Bandlight("apply " + in + "'" + dir +
+                           "/out.tif' --light-group key=A:D65 --light-group fill=F11:F11"),
+                 "only an EXR keeps channel names");
+    CheckOneLine(Bandlight("spectral " + in + "'" + dir + "/out.tif' --light-group key=A:D65"),
+                 "only an EXR keeps channel names");
+    CheckOneLine(Bandlight("render '" + std::string(SCENES_DIR) + "/two_lights.yaml' "
+                           "--light-groups -o '" + dir + "/render.tif'"),
+                 "only an EXR keeps channel names");
+    // Whatever writes them: the image module refuses the names it would lose.
+    CheckOneLine(Bandlight("apply " + in + "'" + dir + "/out.tif' --from A --to D65"),
+                 "would become anonymous channels");
+    for (const char* f : {"out.tif", "render.tif", "render.png"})
+    {
+        CHECK(!fs::exists(dir + "/" + f));
+    }
+}
+
+TEST_CASE("A light-group file: comments, any line ends, and each mistake at its line",
+          "[cli][mistakes]")
+{
+    const std::string dir = Folder("light_group_file");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/two_lights.yaml' --light-groups "
+                      "-o '" + dir + "/shot.exr'")
+                .code == 0);
+    const std::string in = "'" + dir + "/shot.exr' '" + dir + "/out.exr' ";
+    const auto write = [&](const std::string& name, const std::string& text)
+    {
+        std::ofstream(dir + "/" + name, std::ios::binary) << text;
+        return "--light-group-file '" + dir + "/" + name + "'";
+    };
+    // A trailing comment, and lines ended by CR alone (old Mac editors): the
+    // same relight as the plain file.
+    REQUIRE(Bandlight("apply " + in + write("plain.txt", "key=A:D65\nfill=F11:F11\n")).code == 0);
+    const std::string plain = dir + "/plain.exr";
+    fs::rename(dir + "/out.exr", plain);
+    for (const std::string text :
+         {"key=A:D65  # the key, tungsten\nfill=F11:F11\t# the fill\n", "key=A:D65\rfill=F11:F11\r",
+          "# groups\r\nkey=A:D65\r\nfill=F11:F11\r\n"})
+    {
+        INFO(text);
+        const Result r = Bandlight("apply " + in + write("g.txt", text));
+        INFO(r.err);
+        REQUIRE(r.code == 0);
+        CHECK(Sh("oiiotool --no-autopremult '" + plain + "' '" + dir +
+                 "/out.exr' --diff --fail 0 --failpercent 0")
+                  .code == 0);
+        fs::remove(dir + "/out.exr");
+    }
+    CheckOneLine(Bandlight("apply " + in + write("m.txt", "key=A:D65@nosuch\nfill=F11:F11\n")),
+                 "m.txt:1: ");
+    CheckOneLine(Bandlight("apply " + in + write("i.txt", "key=A:D65\nfill=F11:XYZ\n")),
+                 "i.txt:2: unknown illuminant 'XYZ'");
+    CheckOneLine(Bandlight("apply " + in + "--light-group-file ''"), "is an empty path");
+    CHECK(!fs::exists(dir + "/out.exr"));
+}
+
 TEST_CASE("Skipping existing frames counts only regular files as finished", "[cli][mistakes]")
 {
     const std::string dir = Folder("skip_dir");
@@ -463,11 +530,22 @@ TEST_CASE("apply --light-group: bad input is one line naming the group or file, 
         CheckOneLine(Bandlight("apply '" + over + "' '" + out + "' --light-group key=A:D65"),
                      "over.exr: the light groups sum to more than the beauty at pixel (0, 0)");
     }
-    SECTION("NaN in a group")
+    SECTION("NaN in a group is guarded as every pixel path guards it, and counted")
     {
         const std::string nan = ArnoldShot(dir + "/nan.exr", 1.0f, true);
-        CheckOneLine(Bandlight("apply '" + nan + "' '" + out + "' --light-group fill=F11:D65"),
-                     "nan.exr: light group 'key' is NaN at pixel (1, 1)");
+        const std::string guarded = dir + "/guarded.exr";
+        const Result r =
+            Bandlight("apply '" + nan + "' '" + guarded + "' --light-group fill=F11:D65");
+        INFO(r.err);
+        CHECK(r.code == 0);
+        CHECK_THAT(r.err, Contains("nan.exr: 1 pixels held NaN or infinite values"));
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(guarded);
+        REQUIRE(in);
+        const OIIO::ImageSpec& spec = in->spec();
+        std::vector<float> px(size_t(spec.image_pixels()) * size_t(spec.nchannels));
+        REQUIRE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+        CHECK(std::all_of(px.begin(), px.end(), [](float v) { return std::isfinite(v); }));
+        fs::remove(guarded);
     }
     SECTION("--light-group with --look, or with --from")
     {
