@@ -359,13 +359,9 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
                                 " for the work and back");
             }
         }
-        for (const auto& [name, work] : apply.works)
+        const auto inWorkingSpace = [&](const BufferWork& work) -> LightGroupWork
         {
-            if (!work)
-            {
-                continue;  // the same light: carried
-            }
-            works[name] = [&, work = work](float* p, long w, long h, int n, const int* rgb)
+            return [&, work](float* p, long w, long h, int n, const int* rgb)
             {
                 if (in2work)
                 {
@@ -377,9 +373,29 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
                     ApplyToBuffer(work2out, p, w, h, n, rgb, 0);
                 }
             };
+        };
+        LightGroupWork residual;
+        if (apply.everyGroup)
+        {
+            for (const LightGroupLayer& g : layout.groups)
+            {
+                works[g.name] = inWorkingSpace(apply.everyGroup);
+            }
+            residual = inWorkingSpace(apply.everyGroup);
+            notes.push_back(where + ": every light group and the residual relit by the same "
+                            "change, the beauty rebuilt as their sum (the file stays "
+                            "consistent)");
+        }
+        for (const auto& [name, work] : apply.works)
+        {
+            if (!work)
+            {
+                continue;  // the same light: carried
+            }
+            works[name] = inWorkingSpace(work);
         }
         const size_t unguarded =
-            RelightLightGroups(layout, works, pixels, width, height, channels, where);
+            RelightLightGroups(layout, works, pixels, width, height, channels, where, residual);
         if (unguarded > 0)
         {
             notes.push_back(where + ": " + std::to_string(unguarded) +
@@ -442,5 +458,27 @@ std::vector<std::string> ApplyLightGroupsToImageData(const LightGroupApply& appl
 {
     return ApplyLightGroupsWith(apply, source, "", colour, InMemory(image, source));
 }
+
+bool HoldsLightGroups(const std::string& file)
+{
+    if (file.empty())
+    {
+        return false;
+    }
+    ImageData header;
+    if (!ImageFiles().read(file, header, false).message.empty() || header.parts != 1)
+    {
+        return false;
+    }
+    try
+    {
+        return !FindLightGroups(file, header.channelNames, header.attributes).groups.empty();
+    }
+    catch (const Exception&)
+    {
+        return false;
+    }
+}
+
 
 }  // namespace bandlight::jobs

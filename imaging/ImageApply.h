@@ -67,6 +67,10 @@ struct LightGroupApply
 {
     std::map<std::string, BufferWork> works;  ///< an empty work: named, carried unchanged
     std::map<std::string, std::string> mapped;
+    /// One change for the whole image (`apply --from --to` on a file with
+    /// light groups): every group the file holds and the residual relit by
+    /// it, so the beauty stays their sum. `works` is then empty.
+    BufferWork everyGroup;
 };
 
 /// The light groups of an image (FindLightGroups) checked against `apply`:
@@ -85,6 +89,10 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                  const std::string& in, const std::string& out,
                                                  const std::string& note,
                                                  const ImageColourRequest& colour);
+
+/// Whether an image (one part) holds light groups as FindLightGroups finds
+/// them; false for "" and for a file it cannot read (the run names it).
+bool HoldsLightGroups(const std::string& file);
 
 /// ApplyToImage and ApplyLightGroupsToImage on an image in memory (read
 /// whole, one part; `source` names it in messages): the same pixels those

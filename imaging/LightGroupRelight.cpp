@@ -160,7 +160,8 @@ std::string FaultMessage(const PixelFault& f, const std::string& file, size_t x,
 
 size_t RelightLightGroups(const LightGroupLayout& layout,
                           const std::map<std::string, LightGroupWork>& works, float* pixels,
-                          long width, long height, int channels, const std::string& file)
+                          long width, long height, int channels, const std::string& file,
+                          const LightGroupWork& residualWork)
 {
     const size_t w = size_t(std::max(width, 0L)), h = size_t(std::max(height, 0L));
     const size_t n = size_t(channels);
@@ -227,6 +228,14 @@ size_t RelightLightGroups(const LightGroupLayout& layout,
             {
                 work->second(block, width, long(rows), channels, g.rgb);
             }
+        }
+        if (residualWork)
+        {
+            // The residual relit as the groups are: as float RGB, back in double.
+            std::vector<float> rgb(residual.begin(), residual.begin() + std::ptrdiff_t(3 * count));
+            const int channelsRgb[3] = {0, 1, 2};
+            residualWork(rgb.data(), width, long(rows), 3, channelsRgb);
+            std::copy(rgb.begin(), rgb.end(), residual.begin());
         }
         ParallelFor(count, 0,
                     [&](size_t a, size_t b)

@@ -93,9 +93,12 @@ using LightGroupWork = std::function<void(float*, long, long, int, const int*)>;
 /// on blocks of whole rows, top to bottom. Channels other than the groups'
 /// and the beauty's R, G, B are not touched. Throws Exception naming `file`
 /// and the first pixel at fault, before any pixel changes.
+/// With `residual`, the residual is relit by it too (one change for the
+/// whole image), as a 3-channel float buffer.
 size_t RelightLightGroups(const LightGroupLayout& layout,
                           const std::map<std::string, LightGroupWork>& works, float* pixels,
-                          long width, long height, int channels, const std::string& file);
+                          long width, long height, int channels, const std::string& file,
+                          const LightGroupWork& residual = nullptr);
 
 /// The largest excess of Σ groups over the beauty a partition may show, for
 /// a pixel value `level` (max of |beauty| and Σ |group|) in an image whose

@@ -261,6 +261,21 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     }
     result.applied = form.applied;
     const BufferWork work = form.work(r.threads);
+    if (r.look.empty() && HoldsLightGroups(FirstExistingInput(FrameSet(r))))
+    {
+        // A change of light on a file with light groups: every group and the
+        // residual get it, so the beauty stays their sum.
+        LightGroupApply apply;
+        apply.everyGroup = work;
+        FrameNotes notes(r.input, r.output, reporter);
+        result.native = form.kernel || form.native;
+        const FrameRun run = RunFrameSet(
+            FrameSet(r), reporter,
+            [&](const std::string& in, const std::string& out)
+            { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
+        Counted(run, result);
+        return result;
+    }
     // Frames run on several threads at once (RunFrameSet).
     FrameNotes notes(r.input, r.output, reporter);
     const auto applyOne = [&](const std::string& in, const std::string& out)

@@ -501,3 +501,47 @@ TEST_CASE("plot draws the lecture's pictures", "[cli]")
     CHECK(bad.code == 2);
     CHECK_THAT(bad.err, Contains("plots are written as .png or .svg"));
 }
+
+TEST_CASE("apply --from --to on a file with light groups relights every group and the residual",
+          "[cli][lightgroups]")
+{
+    // Relighting only the beauty would leave beauty != Σ groups: the file
+    // stays consistent, and says so.
+    const std::string shot = Temp("lg_shot.exr");
+    const std::string relit = Temp("lg_relit.exr");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/two_lights.yaml' --light-groups "
+                      "-o '" + shot + "'")
+                .code == 0);
+    const Result r =
+        Bandlight("apply '" + shot + "' '" + relit + "' --from A --to D65 --method rootpoly");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.err, Catch::Contains("every light group and the residual relit"));
+    const OIIO::ImageBuf in = Read(shot), out = Read(relit);
+    const OIIO::ImageSpec& spec = out.spec();
+    REQUIRE(spec.channelnames == in.spec().channelnames);
+    const auto channel = [&](const std::string& name)
+    {
+        return int(std::find(spec.channelnames.begin(), spec.channelnames.end(), name) -
+                   spec.channelnames.begin());
+    };
+    double moved = 0.0, worst = 0.0;
+    for (OIIO::ImageBuf::ConstIterator<float> a(in), b(out); !b.done(); ++a, ++b)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            const std::string rgb(1, "RGB"[c]);
+            const double groups = b[channel("key." + rgb)] + b[channel("fill." + rgb)];
+            const double residualIn =
+                a[channel(rgb)] - (a[channel("key." + rgb)] + a[channel("fill." + rgb)]);
+            // The render has no emission: its residual is float noise, and
+            // so is the relit one.
+            worst = std::max(worst, std::abs(b[channel(rgb)] - groups) -
+                                        std::abs(residualIn) * 2.0);
+            moved = std::max(moved, double(std::abs(b[channel("key." + rgb)] -
+                                                    a[channel("key." + rgb)])));
+        }
+    }
+    CHECK(worst < 1e-5);
+    CHECK(moved > 1e-3);  // the groups were relit, not carried
+}
