@@ -81,6 +81,9 @@ struct ImageFilesStatus
 /// Throws what `status` reports (nothing on success).
 void ThrowIfFailed(const ImageFilesStatus& status);
 
+/// Whether a channel, by its name, is left out of an output.
+using ChannelFilter = std::function<bool(const std::string& channel)>;
+
 /// The module's entry points.
 struct ImageFilesApi
 {
@@ -92,9 +95,12 @@ struct ImageFilesApi
     /// deep or MIP-mapped part, a multi-part file with no R, G, B part, and
     /// a multi-part file written to a format of one image are refused naming
     /// the part, nothing written.
+    /// `drop`, when given, names the channels of a processed part left out
+    /// of the output (a spectral render's S0.<λ> channels, which a change
+    /// of its RGB would leave stale).
     ImageFilesStatus (*transform)(const std::string& in, const std::string& out,
                                   const PixelProcess& process, const std::string& note,
-                                  bool everyPart);
+                                  bool everyPart, const ChannelFilter& drop);
     ImageFilesStatus (*write)(const std::string& path, const float* pixels, int width, int height,
                               int channels, const std::vector<std::string>& channelNames,
                               const ImageDescription& description, PixelType type);
@@ -107,7 +113,7 @@ struct ImageFilesApi
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 7;
+constexpr int kImageFilesApiVersion = 8;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

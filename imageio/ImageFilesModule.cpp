@@ -272,8 +272,57 @@ ImageData Header(const OIIO::ImageInput& input, const OIIO::ImageSpec& spec)
     return image;
 }
 
+/// `spec` and `pixels` without the channels `drop` names (alpha and depth
+/// indices and per-channel formats kept in step); `kept` receives the
+/// compacted pixels. Returns false when nothing is dropped.
+bool DropChannels(OIIO::ImageSpec& spec, const std::vector<float>& pixels,
+                  const ChannelFilter& drop, std::vector<float>& kept)
+{
+    std::vector<int> keep;
+    for (int c = 0; c < spec.nchannels; ++c)
+    {
+        if (!drop(spec.channelnames[size_t(c)]))
+        {
+            keep.push_back(c);
+        }
+    }
+    if (int(keep.size()) == spec.nchannels)
+    {
+        return false;
+    }
+    const size_t count = pixels.size() / size_t(spec.nchannels);
+    kept.resize(count * keep.size());
+    for (size_t p = 0; p < count; ++p)
+    {
+        for (size_t k = 0; k < keep.size(); ++k)
+        {
+            kept[p * keep.size() + k] = pixels[p * size_t(spec.nchannels) + size_t(keep[k])];
+        }
+    }
+    std::vector<std::string> names;
+    std::vector<OIIO::TypeDesc> formats;
+    int alpha = -1, z = -1;
+    for (size_t k = 0; k < keep.size(); ++k)
+    {
+        names.push_back(spec.channelnames[size_t(keep[k])]);
+        if (!spec.channelformats.empty())
+        {
+            formats.push_back(spec.channelformats[size_t(keep[k])]);
+        }
+        alpha = keep[k] == spec.alpha_channel ? int(k) : alpha;
+        z = keep[k] == spec.z_channel ? int(k) : z;
+    }
+    spec.nchannels = int(keep.size());
+    spec.channelnames = names;
+    spec.channelformats = formats;
+    spec.alpha_channel = alpha;
+    spec.z_channel = z;
+    return true;
+}
+
 ImageFilesStatus Transform(const std::string& in, const std::string& out,
-                           const PixelProcess& process, const std::string& note, bool everyPart)
+                           const PixelProcess& process, const std::string& note, bool everyPart,
+                           const ChannelFilter& drop)
 {
     return Reported(
         in,
@@ -331,6 +380,7 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
             input->close();
             std::vector<OIIO::ImageSpec> outSpecs = specs;  // pixel types, names, metadata
             std::vector<const float*> data;
+            std::vector<std::vector<float>> kept(specs.size());
             for (size_t p = 0; p < specs.size(); ++p)
             {
                 const OIIO::ImageSpec& spec = specs[p];
@@ -351,6 +401,10 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
                 if (!note.empty())
                 {
                     outSpecs[p].attribute("bandlight:transform", note);
+                }
+                if (drop && DropChannels(outSpecs[p], pixels[p], drop, kept[p]))
+                {
+                    data[p] = kept[p].data();
                 }
             }
             if (!any)

@@ -16,6 +16,7 @@
 #include "plugin/ConfigBuilder.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/Exception.h"
+#include "spectral/SpectralImage.h"
 #include "spectral/Parallel.h"
 
 namespace bandlight::jobs
@@ -123,10 +124,50 @@ BufferWork KernelWork(const ClampMatrixKernel& kernel, int threads)
 
 namespace
 {
-/// A format that holds no integer code values (OpenEXR: half, float): an
-/// integer image written there becomes float values read as linear.
+/// A spectral render's emissive channels, the beauty's ("S0.<λ>") or a
+/// group's ("<group>.S0.<λ>"): radiance under the light before the change,
+/// which a change of the RGB would leave stale. They are left out of the
+/// output (reflective "T.<λ>" channels, remittances, do not depend on the
+/// light and are kept).
+bool StaleSpectralChannel(const std::string& name)
+{
+    const size_t dot = name.find('.');
+    for (const std::string& n : {name, dot == std::string::npos ? std::string() : name.substr(dot + 1)})
+    {
+        try
+        {
+            const std::optional<SpectralChannel> c = ParseSpectralChannel(n);
+            if (c && c->kind == SpectralKind::EMISSIVE)
+            {
+                return true;
+            }
+        }
+        catch (const Exception&)
+        {
+            // Not a spectral channel bandlight reads: carried as it is.
+        }
+    }
+    return false;
+}
+
+/// The note for the emissive spectral channels of `header` left out of
+/// `out` ("" when it has none).
+std::string DroppedSpectraNote(const ImageData& header, const std::string& where)
+{
+    const size_t n = size_t(std::count_if(header.channelNames.begin(), header.channelNames.end(),
+                                          StaleSpectralChannel));
+    if (n == 0)
+    {
+        return "";
+    }
+    return where + ": its " + std::to_string(n) +
+           " spectral channels (S0.*) are left out of the output: they hold the light before "
+           "the change, and would contradict the relit RGB (the spectral command relights "
+           "spectra exactly)";
+}
+
 /// Reads `in`, runs `process` on its pixels and writes `out` through the
-/// image module. What `process` throws comes back as it was (a
+/// image module, without the stale spectral channels. What `process` throws comes back as it was (a
 /// ParameterError spells its parameters per face), not as the module's text.
 void TransformImage(const std::string& in, const std::string& out, const PixelProcess& process,
                     const std::string& note, bool everyPart)
@@ -147,7 +188,7 @@ void TransformImage(const std::string& in, const std::string& out, const PixelPr
                 throw;
             }
         },
-        note, everyPart);
+        note, everyPart, StaleSpectralChannel);
     if (thrown)
     {
         std::rethrow_exception(thrown);
@@ -155,6 +196,8 @@ void TransformImage(const std::string& in, const std::string& out, const PixelPr
     ThrowIfFailed(status);
 }
 
+/// A format that holds no integer code values (OpenEXR: half, float): an
+/// integer image written there becomes float values read as linear.
 bool IsFloatOnlyFile(const std::string& path)
 {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -179,6 +222,10 @@ std::vector<std::string> ApplyWith(const BufferWork& work, const std::string& in
     const auto process = [&](float* pixels, long width, long height, int channels, const int* rgb,
                              const ImageData& header)
     {
+        if (const std::string dropped = DroppedSpectraNote(header, in); !dropped.empty())
+        {
+            notes.push_back(dropped);
+        }
         if (!colour.working)
         {
             work(pixels, width, height, channels, rgb);
@@ -323,14 +370,9 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
         }
         const std::string where = header.partName.empty() ? in : in + ", " + header.partName;
         notes.push_back(where + ": " + layout.describe());
-        if (std::any_of(header.channelNames.begin(), header.channelNames.end(),
-                        [](const std::string& n)
-                        { return n.rfind("S0.", 0) == 0 || n.find(".S0.") != std::string::npos; }))
+        if (const std::string dropped = DroppedSpectraNote(header, where); !dropped.empty())
         {
-            notes.push_back(where +
-                            ": its spectral channels are carried as they were, under the old "
-                            "lights (the spectral command relights them exactly, with "
-                            "{light_group})");
+            notes.push_back(dropped);
         }
         std::map<std::string, LightGroupWork> works;
         OCIO::ConstCPUProcessorRcPtr in2work, work2out;

@@ -545,3 +545,24 @@ TEST_CASE("apply --from --to on a file with light groups relights every group an
     CHECK(worst < 1e-5);
     CHECK(moved > 1e-3);  // the groups were relit, not carried
 }
+
+TEST_CASE("apply on a spectral render leaves out the spectra it would leave stale",
+          "[cli][spectral]")
+{
+    // The relit RGB and the old spectra would contradict each other: a later
+    // `spectral` on the output must not return the un-relit image.
+    const std::string shot = Temp("stale_shot.exr");
+    const std::string relit = Temp("stale_relit.exr");
+    REQUIRE(Bandlight("render '" + std::string(SCENES_DIR) + "/two_lights.yaml' --spectra -o '" +
+                      shot + "'")
+                .code == 0);
+    const Result r = Bandlight("apply '" + shot + "' '" + relit + "' --from A --to D65");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK_THAT(r.err, Catch::Contains("spectral channels (S0.*) are left out of the output"));
+    const OIIO::ImageBuf out = Read(relit);
+    CHECK(out.spec().channelnames == std::vector<std::string>{"R", "G", "B"});
+    const Result again = Bandlight("spectral '" + relit + "' '" + Temp("stale_again.exr") + "'");
+    CHECK(again.code == 2);
+    CHECK_THAT(again.err, Catch::Contains("has no spectral channels"));
+}
