@@ -378,9 +378,15 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
         OCIO::ConstCPUProcessorRcPtr in2work, work2out;
         if (colour.working)
         {
+            // An untagged file is in the convention of the renderer whose
+            // naming was recognised: Blender writes linear Rec.709 unless its
+            // colour management says otherwise; else the working space.
+            const bool blender = !layout.groups.empty() &&
+                                 layout.groups.front().naming == LightGroupNaming::BLENDER;
+            const RgbSpace& untagged = blender ? FindRgbSpace("rec709") : *colour.working;
             const ImageEncoding encoding = colour.declared
                                                ? *colour.declared
-                                               : IdentifyImageEncoding(header, in, *colour.working);
+                                               : IdentifyImageEncoding(header, in, untagged);
             if (IsDisplayReferred(header) || IsDisplayReferredFile(out))
             {
                 throw Exception(where +
@@ -389,8 +395,13 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
             }
             if (encoding.assumed)
             {
-                notes.push_back(in + " names no colour space: taken as linear " +
-                                SpaceLabel(*colour.working) + " (say otherwise with {colorspace})");
+                notes.push_back(
+                    blender ? in + " names no colour space: its Blender light-group naming says "
+                                   "Blender wrote it, taken as Blender's default linear Rec.709 "
+                                   "(say otherwise with {colorspace})"
+                            : in + " names no colour space: taken as linear " +
+                                  SpaceLabel(*colour.working) +
+                                  " (say otherwise with {colorspace})");
             }
             in2work = EncodingToLinear(encoding, *colour.working);
             work2out = LinearToEncoding(*colour.working, encoding);

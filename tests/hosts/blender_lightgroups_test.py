@@ -15,6 +15,8 @@ stamp note in its header. Then:
      --colorspace rec709` (Blender's scene-linear space, which its EXRs do
      not tag) finds the groups by name ("ViewLayer.Combined_key.R", ...) and says it
      read Blender/Cycles naming;
+     without --colorspace, the untagged file is read as linear Rec.709
+     (Blender's default), the same pixels, with a note naming the assumption;
   2. the relit key layer equals `bandlight apply --from A --to D65` of the
      key layer alone (extracted by oiiotool as a plain R, G, B image), to
      1e-6 of the brightest value;
@@ -175,6 +177,19 @@ def main():
           and f"beauty {combined}" in r.stderr,
           "1. groups found by name, Blender/Cycles naming reported: " + r.stderr.strip())
     dst, dst_info = read_channels(out)
+
+    # 1b. Without --colorspace: Blender's naming says Blender wrote the
+    # untagged file, so it is read as Blender's linear Rec.709, the same
+    # pixels as with --colorspace rec709, and the note says so.
+    untagged = os.path.join(work, "relit_untagged.exr")
+    r = subprocess.run([bandlight, "apply", shot, untagged, "--light-group", "key=A:D65",
+                        "--light-group", "fill=F11:D50", "--method", "bradford"],
+                       capture_output=True, text=True)
+    same, _ = read_channels(untagged) if r.returncode == 0 else ({}, None)
+    check(r.returncode == 0 and "Blender's default linear Rec.709" in r.stderr
+          and all(same.get(n) == v for n, v in dst.items()),
+          "1b. an untagged Blender render is read as linear Rec.709, as --colorspace rec709 "
+          "reads it: " + r.stderr.strip())
 
     # 2. The key layer alone, relit as a plain image.
     alone = os.path.join(work, "key.exr")
