@@ -9,6 +9,7 @@
 #include "requests/Inputs.h"
 #include "spectral/AtomicFile.h"
 #include "spectral/ColourRendering.h"
+#include "spectral/Exception.h"
 
 namespace bandlight::jobs
 {
@@ -27,19 +28,39 @@ void WriteOutputs(const IdtRequest& r, const OCIO_NAMESPACE::ConstConfigRcPtr& b
     {
         ConfigRequest c;
         c.out = r.config.empty() ? r.out : r.config;
-        c.base = r.base;
+        const std::string existing = ExistingIdtConfig(r);
+        c.base = existing.empty() ? r.base : existing;
+        c.extendInPlace = !existing.empty();
         c.baseConfig = base;
-        c.workingSpace = r.base.empty() ? result.workingSpace : r.baseSpace;
+        c.workingSpace = c.base.empty() ? result.workingSpace : r.baseSpace;
         c.observer = r.observer;
         c.looks = false;
         for (IdtEntry& e : result.idts)
         {
             e.colorSpace = IdtColorSpaceName(result.camera, e.light);
+            if (c.extendInPlace && base->getColorSpace(e.colorSpace.c_str()))
+            {
+                throw ParameterError(existing + " already has the colour space '" +
+                                     e.colorSpace +
+                                     "' (this camera under this light, added before): nothing "
+                                     "was written; give {config} another folder, or remove the "
+                                     "space from the config");
+            }
             c.inputSpaces.push_back({e.colorSpace, IdtDescription(e, result.camera, result),
                                      e.fit.rawToWorking(), result.workingSpace});
         }
         BuildRequestedConfig(c, reporter, &outputs);
         result.written.push_back(*c.out + "/config.ocio");
+        if (c.extendInPlace)
+        {
+            std::string added;
+            for (const IdtEntry& e : result.idts)
+            {
+                added += (added.empty() ? "" : ", ") + e.colorSpace;
+            }
+            reporter.note(existing + ": held a config already; its colour spaces are kept and " +
+                          std::to_string(result.idts.size()) + " input spaces added: " + added);
+        }
     }
     if (!r.json.empty())
     {

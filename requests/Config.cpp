@@ -23,7 +23,7 @@ void CheckOutputFolder(const ConfigRequest& r)
     {
         OutputPlan().folder("{out}", "").check();  // refused: an empty path
     }
-    if (!r.base.empty())
+    if (!r.base.empty() && !r.extendInPlace)
     {
         std::filesystem::path baseFolder = std::filesystem::path(r.base).parent_path();
         if (baseFolder.empty())
@@ -40,7 +40,7 @@ void CheckOutputFolder(const ConfigRequest& r)
     }
     OutputPlan plan;
     plan.folder("{out}", *r.out, {"config.ocio"});
-    if (!r.base.empty())
+    if (!r.base.empty() && !r.extendInPlace)
     {
         plan.input(r.base);
     }

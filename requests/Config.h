@@ -25,6 +25,9 @@ struct ConfigRequest
     /// (`baseConfig`, which wins); neither: a new config.
     std::string base;
     OCIO_NAMESPACE::ConstConfigRcPtr baseConfig;
+    /// The base is `out`'s own config.ocio, replaced by the extended one
+    /// (`idt --config` into a folder that holds a config: its spaces added).
+    bool extendInPlace = false;
     /// The linear working space; empty: acescg, or with a base its
     /// scene_linear primaries as identified from the base.
     std::string workingSpace;

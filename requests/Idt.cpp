@@ -5,6 +5,7 @@
 #include "plugin/SceneLinearEvidence.h"
 #include "requests/Inputs.h"
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight::jobs
 {
@@ -175,8 +176,36 @@ void CheckIdtRequest(const IdtRequest& r)
     CheckOutputPaths(r);
 }
 
+std::string ExistingIdtConfig(const IdtRequest& r)
+{
+    if (r.config.empty())
+    {
+        return "";
+    }
+    const std::string file = r.config + "/config.ocio";
+    return PathExists(file) ? file : "";
+}
+
 OCIO_NAMESPACE::ConstConfigRcPtr ReadIdtBase(const IdtRequest& r)
 {
+    if (const std::string existing = ExistingIdtConfig(r); !existing.empty())
+    {
+        // {config} holds a config already (another camera's): the input
+        // spaces are added to it, its primaries identified as a base's.
+        OCIO_NAMESPACE::ConstConfigRcPtr config = ReadConfigFile(existing, false);
+        try
+        {
+            IdentifySceneLinear(config);
+        }
+        catch (const ParameterError&)
+        {
+            throw ParameterError("cannot tell the primaries of the scene_linear space of " +
+                                 ShowPath(existing) +
+                                 ", which the input spaces would be added to: write them into a "
+                                 "folder of their own, or extend it with {base} and {base_space}");
+        }
+        return config;
+    }
     if (r.base.empty())
     {
         return nullptr;

@@ -135,8 +135,13 @@ Vec3 CheckedNeutral(const std::vector<double>& neutral);
 /// each output writable and none of them an input (one line each).
 void CheckIdtRequest(const IdtRequest& request);
 
-/// The {base} config (null without one), read and its scene_linear's
-/// primaries identified (or {base_space} checked) before any fit.
+/// The config already in {config}'s folder ("" when there is none): a
+/// second camera's input spaces are added to it.
+std::string ExistingIdtConfig(const IdtRequest& request);
+
+/// The {base} config, or the config already in {config}'s folder (null
+/// without either), read and its scene_linear's primaries identified (or
+/// {base_space} checked) before any fit.
 OCIO_NAMESPACE::ConstConfigRcPtr ReadIdtBase(const IdtRequest& request);
 
 }  // namespace bandlight::jobs

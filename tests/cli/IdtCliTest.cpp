@@ -54,6 +54,36 @@ TEST_CASE("idt --config writes a config ociocheck passes, with one input space p
     }
 }
 
+TEST_CASE("A second camera into the same --config folder is added to it, a clash refused",
+          "[cli][idt]")
+{
+    const std::string dir = TempPath("idt_two_cameras");
+    std::filesystem::remove_all(dir);
+    const std::string d200 =
+        std::string(BANDLIGHT_TEST_DATA_ROOT) + "/rawtoaces/nikon_d200_380_780_5.json";
+    REQUIRE(Bandlight("idt --camera '" + kD21 + "' --lights A,D55 --config '" + dir + "'").code ==
+            0);
+    const Result second =
+        Bandlight("idt --camera '" + d200 + "' --lights A,D55 --config '" + dir + "'");
+    INFO(second.err);
+    REQUIRE(second.code == 0);
+    CHECK_THAT(second.err, Contains("its colour spaces are kept and 2 input spaces added: "
+                                    "Input - nikon d200 - A, Input - nikon d200 - D55"));
+    const Result check = Sh("ociocheck --iconfig '" + dir + "/config.ocio'");
+    CHECK(check.code == 0);
+    for (const char* space : {"Input - arri d21 - A", "Input - arri d21 - D55",
+                              "Input - nikon d200 - A", "Input - nikon d200 - D55"})
+    {
+        CHECK_THAT(check.out, Contains(space));
+    }
+    // The same camera and light again: refused, the config as it was.
+    const Result before = Sh("cat '" + dir + "/config.ocio'");
+    const Result clash = Bandlight("idt --camera '" + d200 + "' --lights A --config '" + dir + "'");
+    CHECK(clash.code == 2);
+    CHECK_THAT(clash.err, Contains("already has the colour space 'Input - nikon d200 - A'"));
+    CHECK(Sh("cat '" + dir + "/config.ocio'").out == before.out);
+}
+
 TEST_CASE(
     "idt --interpolate: the DNG interpolation stays within 0.3 dE00 of IDTs fitted at each CCT",
     "[cli][idt]")
