@@ -205,20 +205,46 @@ IdtEntry FitEntry(const std::string& name, const IdtProblem& problem, const Remi
     return e;
 }
 
+/// {as_shot_light}: the families by name, the fluorescent tubes F1–F12, or
+/// a list of lights as {lights} takes them.
+AsShotSearch AsShotSearchOf(const IdtRequest& r, Reporter& reporter)
+{
+    AsShotSearch search;
+    if (r.asShotLight.empty())
+    {
+        return search;
+    }
+    if (r.asShotLight == "daylight" || r.asShotLight == "planckian")
+    {
+        search.daylight = r.asShotLight == "daylight";
+        search.planckian = !search.daylight;
+        return search;
+    }
+    const std::vector<std::string> names =
+        r.asShotLight == "fluorescent"
+            ? std::vector<std::string>{"F1", "F2", "F3", "F4", "F5", "F6", "F7", "F8", "F9", "F10",
+                                       "F11", "F12"}
+            : SplitList(r.asShotLight);
+    for (const std::string& name : names)
+    {
+        const Light light = ResolveIdtLight(name, reporter);
+        search.lights.emplace_back(light.name, light.spectrum);
+    }
+    return search;
+}
+
 /// {as_shot_neutral}: the light it stands for (EstimateAsShot) and that
 /// light's IDT, reported after the named lights'.
 void AddAsShot(const IdtRequest& r, const SpectralCamera& camera, const FitSetting& s,
-               const RemittanceSets& sets, IdtResult& result)
+               const RemittanceSets& sets, Reporter& reporter, IdtResult& result)
 {
     result.asShotNeutral = r.asShotNeutral;
     result.asShot = EstimateAsShot(camera, CheckedNeutral(r.asShotNeutral), s.working, s.adaptation,
-                                   s.observer);
+                                   s.observer, AsShotSearchOf(r, reporter));
     result.hasAsShot = true;
-    std::ostringstream name;
-    name << "as shot (" << result.asShot.family << " " << std::lround(result.asShot.familyKelvin)
-         << "K)";
     const IdtProblem problem = s.problem(camera, result.asShot.light);
-    result.idts.push_back(FitEntry(name.str(), problem, sets, camera.label()));
+    result.idts.push_back(
+        FitEntry("as shot (" + result.asShot.lightName + ")", problem, sets, camera.label()));
 }
 
 /// The IDT interpolated between the pair's calibrations at `kelvin`
@@ -283,7 +309,7 @@ void FitFromSensitivities(const IdtRequest& r, const FitSetting& s, const Remitt
     }
     if (!r.asShotNeutral.empty())
     {
-        AddAsShot(r, camera, s, sets, result);
+        AddAsShot(r, camera, s, sets, reporter, result);
     }
     if (result.interpolateFrom >= 0)
     {

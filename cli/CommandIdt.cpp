@@ -142,6 +142,11 @@ void AddIdtCommand(CLI::App& app)
     cmd->add_option("--as-shot-neutral", o->asShot,
                     "The camera's neutral R,G,B (raw, any scale): the daylight or Planckian light "
                     "it stands for, its CCT and Duv, and its IDT");
+    cmd->add_option("--as-shot-light", r.asShotLight,
+                    "The lights --as-shot-neutral is matched among: daylight, planckian, "
+                    "fluorescent (F1-F12) or a list of lights (names, 3200K, spectrum files); "
+                    "default daylight or Planckian. A neutral further than 2 dE00 from every one "
+                    "is refused, naming the closest");
     cmd->add_option("--chart-rgb", r.chartRgb,
                     "CSV of a photographed chart's camera RGB, one row per patch ([name,] R, G, "
                     "B): the IDT without sensitivities");

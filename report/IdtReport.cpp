@@ -89,7 +89,7 @@ std::string IdtDocument(const IdtResult& r)
         j["as_shot"] = {{"neutral", r.asShotNeutral},  {"cct", r.asShot.cct},
                         {"duv", r.asShot.duv},         {"nearest", r.asShot.nearest},
                         {"family", r.asShot.family},   {"family_kelvin", r.asShot.familyKelvin},
-                        {"light", r.idts.back().light}};
+                        {"light", r.idts.back().light}, {"grey_de00", r.asShot.greyDeltaE}};
     }
     if (r.interpolateFrom >= 0)
     {
@@ -195,8 +195,9 @@ std::string IdtReport(const IdtResult& r)
     {
         o << "\nAs-shot neutral " << r.asShotNeutral[0] << "," << r.asShotNeutral[1] << ","
           << r.asShotNeutral[2] << ": CCT " << Fixed(r.asShot.cct, 0) << " K, Duv "
-          << Fixed(r.asShot.duv, 4) << " (" << r.asShot.family << " "
-          << Fixed(r.asShot.familyKelvin, 0) << " K matches), nearest " << r.asShot.nearest << "\n";
+          << Fixed(r.asShot.duv, 4) << " (" << r.asShot.lightName << " matches), nearest "
+          << r.asShot.nearest
+          << "; its grey " << Fixed(r.asShot.greyDeltaE, 2) << " dE00 from that light's white\n";
     }
     if (r.interpolateFrom >= 0)
     {

@@ -120,6 +120,11 @@ void CheckConfigOptions(const IdtRequest& r)
 /// Options that do not go together, refused before anything is read.
 void CheckOptions(const IdtRequest& r)
 {
+    if (!r.asShotLight.empty() && r.asShotNeutral.empty())
+    {
+        throw ParameterError("{as_shot_light} names the lights {as_shot_neutral} is matched "
+                             "among: give the neutral too");
+    }
     switch (SourceOf(r))
     {
         case IdtSource::CHART:

@@ -40,6 +40,10 @@ struct IdtRequest
     std::vector<std::string> interpolate;
     /// The camera's as-shot neutral (raw R, G, B; any scale), or empty.
     std::vector<double> asShotNeutral;
+    /// The lights the as-shot neutral is searched among: "" (daylight or
+    /// Planckian), "daylight", "planckian", "fluorescent" (F1–F12), or a
+    /// list of lights as {lights} takes them.
+    std::string asShotLight;
     /// A chart's camera RGB per patch (CSV: optional name column, then R, G,
     /// B), the chart's remittances and the light it was shot under: the IDT
     /// from the chart instead of sensitivities.

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include <Eigen/Dense>
 
@@ -439,40 +440,93 @@ std::string NearestStandardIlluminant(const Eigen::Vector2d& uv)
 
 }  // namespace
 
-AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
+std::string AsShotSearch::describe() const
+{
+    if (!lights.empty())
+    {
+        std::string names;
+        for (const auto& [name, light] : lights)
+        {
+            names += (names.empty() ? "" : ", ") + name;
+        }
+        return names;
+    }
+    return daylight && planckian ? "daylight or Planckian light"
+           : daylight            ? "daylight"
+                                 : "Planckian light";
+}
+
+AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& given,
                               const RgbSpace& working, AdaptationMethod adaptation,
-                              Observer observer)
+                              Observer observer, const AsShotSearch& search)
 {
     for (int c = 0; c < 3; ++c)
     {
-        if (!(neutral[c] > 0.0) || !std::isfinite(neutral[c]))
+        if (!(given[c] > 0.0) || !std::isfinite(given[c]))
         {
             throw Exception("an as-shot neutral has three positive, finite channels");
         }
     }
+    // Its chromaticity alone counts: scaled so that nothing underflows.
+    const Vec3 neutral = given / given.maxCoeff();
     const Eigen::Vector2d target = LogChromaticity(neutral);
     AsShotEstimate best;
     best.residual = std::numeric_limits<double>::infinity();
-    const LightFamily* matched = nullptr;
-    for (const LightFamily& f : kLightFamilies)
+    bool atRangeEnd = false;
+    if (search.lights.empty())
     {
-        const FamilyMatch m = MatchFamily(camera, target, f);
-        if (m.residual < best.residual)
+        const LightFamily* matched = nullptr;
+        for (const LightFamily& f : kLightFamilies)
         {
-            best.family = f.name;
-            best.familyKelvin = m.kelvin;
-            best.residual = m.residual;
-            matched = &f;
+            if ((std::string(f.name) == "daylight" && !search.daylight) ||
+                (std::string(f.name) == "planckian" && !search.planckian))
+            {
+                continue;
+            }
+            const FamilyMatch m = MatchFamily(camera, target, f);
+            if (m.residual < best.residual)
+            {
+                best.family = f.name;
+                best.familyKelvin = m.kelvin;
+                best.residual = m.residual;
+                matched = &f;
+            }
         }
+        if (!matched)
+        {
+            throw Exception(camera.label() + ": no " + search.describe() +
+                            " gives a response in every channel");
+        }
+        // A best match at either end of the range: the neutral lies beyond it.
+        const double lowK = matched->lowK;
+        atRangeEnd = best.familyKelvin <= lowK * (1.0 + 1e-6) ||
+                     best.familyKelvin >= kHighestCctK * (1.0 - 1e-6);
+        best.familyKelvin = std::clamp(best.familyKelvin, kLowestCctK, kHighestCctK);
+        best.light = matched->light(std::max(best.familyKelvin, matched->lowK));
+        best.lightName = best.family + " " + std::to_string(std::lround(best.familyKelvin)) + "K";
     }
-    if (!matched)
+    else
     {
-        throw Exception(camera.label() +
-                        ": no daylight or Planckian light gives a response in "
-                        "every channel");
+        for (const auto& [name, light] : search.lights)
+        {
+            const Vec3 r = Response(camera, light);
+            const double residual = r.minCoeff() > 0.0 ? (LogChromaticity(r) - target).norm()
+                                                       : std::numeric_limits<double>::infinity();
+            if (residual < best.residual)
+            {
+                best.residual = residual;
+                best.light = light;
+                best.lightName = name;
+            }
+        }
+        if (!std::isfinite(best.residual))
+        {
+            throw Exception(camera.label() + ": none of " + search.describe() +
+                            " gives a response in every channel");
+        }
+        best.family = "list";
+        best.familyKelvin = ComputeCct(IlluminantWhiteXyz(best.light, observer)).cctK;
     }
-    best.familyKelvin = std::clamp(best.familyKelvin, kLowestCctK, kHighestCctK);
-    best.light = matched->light(std::max(best.familyKelvin, matched->lowK));
     // The white the neutral stands for: balanced by the matched light's
     // gains, through its IDT to balanced working RGB, and back to XYZ under
     // the light (the balance undone). An exact match gives the light's white.
@@ -487,6 +541,23 @@ AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
     best.cct = cd.cctK;
     best.duv = cd.duv;
     best.nearest = NearestStandardIlluminant(XyzToUv1960(xyz));
+    // The grey under the matched light against that light's white.
+    const Vec3 white = IlluminantWhiteXyz(best.light, observer);
+    const Vec3 grey = xyz * (white.y() / xyz.y());
+    best.greyDeltaE = DeltaE2000(XyzToLab(grey, white), XyzToLab(white, white));
+    if (!(best.greyDeltaE <= kAsShotLimitDeltaE))
+    {
+        std::ostringstream why;
+        why.precision(3);
+        why << camera.label() << ": the as-shot neutral is no " << search.describe()
+            << " this camera records: the closest, " << best.lightName << ", leaves its grey "
+            << best.greyDeltaE << " ΔE00 from that light's white (Duv " << best.duv
+            << (atRangeEnd ? ", at the end of the temperature range" : "") << "; the limit is "
+            << kAsShotLimitDeltaE
+            << " ΔE00): give the lights to search with {as_shot_light} (fluorescent, a list of "
+               "lights or spectrum files), or fit the IDT for a light with {lights}";
+        throw ParameterError(why.str());
+    }
     return best;
 }
 

@@ -172,6 +172,13 @@ IdtCalibration CalibrationOf(const IdtProblem& problem, const IdtFit& fit);
 Mat3 InterpolateIdt(const IdtCalibration& c1, const IdtCalibration& c2, const IdtProblem& target,
                     bool extrapolate);
 
+/// How far an as-shot neutral may stand from the light it is matched to:
+/// the grey it stands for, under that light, at most this many ΔE00 from
+/// the light's own white. A neutral further away is refused: no light
+/// searched explains it (a fluorescent tube searched as daylight, a
+/// neutral of 1,1,1 that no camera records under a real light).
+constexpr double kAsShotLimitDeltaE = 2.0;
+
 /// What a camera's as-shot neutral says about the light.
 struct AsShotEstimate
 {
@@ -182,6 +189,22 @@ struct AsShotEstimate
     double residual = 0.0;      ///< log-chromaticity mismatch of its response (0: exact)
     std::string nearest;        ///< the standard illuminant nearest in CIE 1960 (u, v)
     Spectrum light;             ///< the matched light, to fit the IDT for
+    std::string lightName;      ///< "daylight 5600K", "planckian 3200K", or a listed light's name
+    /// ΔE00 of the grey the neutral stands for against the matched light's
+    /// white (L*a*b* relative to that white): 0 for an exact match.
+    double greyDeltaE = 0.0;
+};
+
+/// The lights an as-shot neutral is searched among: the daylight and
+/// Planckian families ("daylight", "planckian", both by default) by
+/// temperature, or a list of lights (fluorescent tubes, LED fixtures, a
+/// user's own).
+struct AsShotSearch
+{
+    bool daylight = true;
+    bool planckian = true;
+    std::vector<std::pair<std::string, Spectrum>> lights;  ///< when given: these alone
+    std::string describe() const;  ///< "daylight or Planckian light", "F1, F2, ..."
 };
 
 /// The daylight (4000–25000 K) or Planckian (1000–25000 K) light whose raw
@@ -191,9 +214,14 @@ struct AsShotEstimate
 /// carried through that light's white balance and first-order IDT back to
 /// XYZ under the light (exactly the light's white when the response
 /// matches), whose CCT and Duv are reported.
+///
+/// Refused (ParameterError naming the closest light and the distance, and
+/// whether it lies at the end of its family's temperature range) when the
+/// grey is more than kAsShotLimitDeltaE from the matched light's white.
 AsShotEstimate EstimateAsShot(const SpectralCamera& camera, const Vec3& neutral,
                               const RgbSpace& working, AdaptationMethod adaptation,
-                              Observer observer = Observer::CIE1931_2DEG);
+                              Observer observer = Observer::CIE1931_2DEG,
+                              const AsShotSearch& search = {});
 
 /// The index of the flattest remittance of a set (smallest relative
 /// spread over 400–700 nm): the chart's neutral, whose raw RGB gives the

@@ -43,7 +43,8 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                const std::string& workingSpace, const std::string& adaptation,
                const py::object& observer, const std::optional<Path>& training,
                const py::object& testSet, const py::object& interpolate,
-               const py::object& asShotNeutral, const std::optional<Path>& chartRgb,
+               const py::object& asShotNeutral, const py::object& asShotLight,
+               const std::optional<Path>& chartRgb,
                const py::object& chart, const py::object& light, int rootpoly,
                const std::optional<Path>& json, const std::optional<Path>& config,
                const std::optional<Path>& base, const std::optional<Path>& out,
@@ -68,6 +69,13 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
     {
         r.asShotNeutral =
             CastTo<std::vector<double>>(asShotNeutral, "as_shot_neutral", "three numbers R, G, B");
+    }
+    if (!asShotLight.is_none())
+    {
+        for (const std::string& name : ToNames(asShotLight, "as_shot_light"))
+        {
+            r.asShotLight += (r.asShotLight.empty() ? "" : ",") + name;
+        }
     }
     r.chartRgb = OptionalPath(chartRgb);
     r.chart = chart.is_none() ? "" : PathText(chart, "chart");
@@ -129,7 +137,7 @@ void AddIdt(py::module_& m)
           py::arg("adaptation") = defaults::ADAPTATION, py::arg("observer") = defaults::OBSERVER,
           py::arg("training") = py::none(), py::arg("test_set") = defaults::IDT_TEST_SET,
           py::arg("interpolate") = py::none(), py::arg("as_shot_neutral") = py::none(),
-          py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
+          py::arg("as_shot_light") = py::none(), py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
           py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY,
           py::arg("json") = py::none(), py::arg("config") = py::none(),
           py::arg("base") = py::none(), py::arg("out") = py::none(),
@@ -146,7 +154,10 @@ document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",
   "objective_rms_de76", "error": {SET: {"mean", "p95", "max"}} (CIEDE2000 on
   the training set and the test set), "colorspace" (with a config)};
 - "as_shot" with as_shot_neutral: {"cct", "duv", "nearest", "family",
-  "family_kelvin", "light"} (the IDT for it is the last of "idts");
+  "family_kelvin", "light", "grey_de00"} (the IDT for it is the last of
+  "idts"); as_shot_light: the lights searched ("daylight", "planckian",
+  "fluorescent" or a list), daylight or Planckian by default; a neutral
+  whose grey is more than 2 ΔE00 from the closest light's white is refused;
 - "interpolation" with interpolate: the IDT interpolated between the two
   lights as DNG does (their "calibrations": {"light", "cct", "color_matrix"},
   XYZ -> raw as numpy arrays, interpolated in mired; white balance and CAT

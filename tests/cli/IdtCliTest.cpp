@@ -158,5 +158,24 @@ TEST_CASE("idt --as-shot-neutral finds the light a camera's neutral stands for",
         CHECK(std::abs(j["as_shot"]["duv"].get<double>() - fit["idts"][0]["duv"].get<double>()) <
               0.001);
         CHECK(j["idts"].size() == 1);
+        CHECK(j["as_shot"]["grey_de00"].get<double>() < 0.05);
     }
+    // A fluorescent tube's neutral: no daylight or Planckian light explains
+    // it (refused, naming the closest); searched among the tubes, F11 itself.
+    const nlohmann::json f11 = Json("--lights F11");
+    const nlohmann::json& g = f11["idts"][0]["gains"];
+    std::ostringstream neutral;
+    neutral.precision(12);
+    neutral << 1.0 / g[0].get<double>() << "," << 1.0 / g[1].get<double>() << ","
+            << 1.0 / g[2].get<double>();
+    const Result refused = Bandlight("idt --camera '" + kD21 + "' --as-shot-neutral " +
+                                     neutral.str());
+    CHECK(refused.code == 2);
+    CHECK_THAT(refused.err, Contains("the closest, daylight") && Contains("--as-shot-light"));
+    const nlohmann::json tubes =
+        Json("--as-shot-neutral " + neutral.str() + " --as-shot-light fluorescent");
+    CHECK(tubes["as_shot"]["family"] == "list");
+    CHECK(tubes["idts"].back()["light"] == "as shot (F11)");
+    CHECK(tubes["as_shot"]["grey_de00"].get<double>() < 1e-6);
+    CHECK(Bandlight("idt --camera '" + kD21 + "' --lights A --as-shot-light fluorescent").code == 2);
 }

@@ -375,6 +375,43 @@ TEST_CASE("An as-shot neutral gives the light's CCT within 1 % and Duv within 0.
                       Catch::Contains("positive"));
 }
 
+TEST_CASE("An as-shot neutral no light searched explains is refused, naming the closest",
+          "[transforms][idt]")
+{
+    const RgbSpace& aces = FindRgbSpace("aces2065-1");
+    const Spectrum white(300.0, 5.0, std::vector<double>(107, 1.0));
+    const Spectrum f11 = BuiltinIlluminant("F11");
+    const Vec3 neutral = IdtProblem(D21(), f11, aces, AdaptationMethod::CAT02).raw(white);
+    // F11's neutral searched among daylight and Planckian lights: the best
+    // of them leaves the grey visibly off (the lights differ in spectrum,
+    // not only in temperature): refused, the closest light and distance named.
+    CHECK_THROWS_WITH(EstimateAsShot(D21(), neutral, aces, AdaptationMethod::CAT02),
+                      Catch::Contains("the closest, ") && Catch::Contains("ΔE00 from that light") &&
+                          Catch::Contains("as_shot_light"));
+    // Searched among the fluorescent tubes: F11 itself, exactly.
+    AsShotSearch tubes;
+    for (const char* name : {"F2", "F7", "F11"})
+    {
+        tubes.lights.emplace_back(name, BuiltinIlluminant(name));
+    }
+    const AsShotEstimate e = EstimateAsShot(D21(), neutral, aces, AdaptationMethod::CAT02,
+                                            Observer::CIE1931_2DEG, tubes);
+    CHECK(e.lightName == "F11");
+    CHECK(e.greyDeltaE < 1e-6);
+    // The scale of a neutral says nothing: 1e-30 of it is the same light.
+    const AsShotEstimate tiny = EstimateAsShot(D21(), 1e-30 * neutral, aces,
+                                               AdaptationMethod::CAT02, Observer::CIE1931_2DEG,
+                                               tubes);
+    CHECK(tiny.lightName == "F11");
+    CHECK(tiny.cct == Approx(e.cct).epsilon(1e-9));
+    // A neutral no real light gives this camera (equal raw channels).
+    CHECK_THROWS_WITH(EstimateAsShot(D21(), Vec3(1.0, 1.0, 1.0), aces, AdaptationMethod::CAT02),
+                      Catch::Contains("is no daylight or Planckian light this camera records"));
+    // A daylight neutral is well within the limit.
+    const Vec3 d55 = IdtProblem(D21(), Daylight(5500.0), aces, AdaptationMethod::CAT02).raw(white);
+    CHECK(EstimateAsShot(D21(), d55, aces, AdaptationMethod::CAT02).greyDeltaE < 0.05);
+}
+
 TEST_CASE("A chart IDT from simulated RGB equals the sensitivity IDT", "[transforms][idt]")
 {
     const SpectralCamera camera = D21();
