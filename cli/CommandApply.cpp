@@ -410,6 +410,12 @@ void AddApplyCommand(CLI::App& app)
                         " here). The beauty becomes the sum of the groups plus the residual. "
                         "NAME=LAYER names where a group is when the file's naming is not "
                         "Blender's, Arnold's or bandlight's (a layer prefix, or r,g,b channels)");
+    cmd->add_option("--light-group-beauty", o->request.lightGroupBeauty,
+                    "What a relit light-group file's beauty is made of: residual (the relit "
+                    "groups + beauty - groups as read; the default, the groups checked to sum to "
+                    "the beauty), rebuild (the relit groups alone: a denoised beauty whose groups "
+                    "are noisy) or difference (the denoised beauty's difference from the groups "
+                    "carried); the output's bandlight:transform says which");
     cmd->add_option("--light-group-file", o->lightGroupFile,
                     "The light groups of a shot with many: one --light-group value per line "
                     "(NAME=FROM:TO[@METHOD] or NAME=LAYER; # comments), after any given on "

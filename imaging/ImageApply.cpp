@@ -448,7 +448,8 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
             works[name] = inWorkingSpace(work);
         }
         const size_t unguarded =
-            RelightLightGroups(layout, works, pixels, width, height, channels, where, residual);
+            RelightLightGroups(layout, works, pixels, width, height, channels, where, residual,
+                               apply.beauty);
         if (unguarded > 0)
         {
             notes.push_back(where + ": " + std::to_string(unguarded) +

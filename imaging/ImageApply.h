@@ -71,6 +71,9 @@ struct LightGroupApply
     /// light groups): every group the file holds and the residual relit by
     /// it, so the beauty stays their sum. `works` is then empty.
     BufferWork everyGroup;
+    /// What the new beauty is made of (a denoised beauty: REBUILD or
+    /// DIFFERENCE).
+    LightGroupBeauty beauty = LightGroupBeauty::RESIDUAL;
 };
 
 /// The light groups of an image (FindLightGroups) checked against `apply`:

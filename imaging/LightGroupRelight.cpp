@@ -18,6 +18,36 @@
 namespace bandlight::jobs
 {
 
+const char* LightGroupBeautyName(LightGroupBeauty beauty)
+{
+    switch (beauty)
+    {
+        case LightGroupBeauty::REBUILD:
+            return "rebuild";
+        case LightGroupBeauty::DIFFERENCE:
+            return "difference";
+        case LightGroupBeauty::RESIDUAL:
+            break;
+    }
+    return "residual";
+}
+
+LightGroupBeauty ParseLightGroupBeauty(const std::string& name)
+{
+    for (const LightGroupBeauty b :
+         {LightGroupBeauty::RESIDUAL, LightGroupBeauty::REBUILD, LightGroupBeauty::DIFFERENCE})
+    {
+        if (name == LightGroupBeautyName(b))
+        {
+            return b;
+        }
+    }
+    throw ParameterError("{light_group_beauty} is residual (a render's own beauty, the default), "
+                         "rebuild (the beauty from the relit groups alone: a denoised beauty) or "
+                         "difference (the denoised beauty's difference from the groups carried), "
+                         "not '" + OneLine(name, 40) + "'");
+}
+
 double PartitionTolerance(double level, double peak, bool half)
 {
     // Float sums of a few groups round within a few ulps of the level;
@@ -161,7 +191,7 @@ std::string FaultMessage(const PixelFault& f, const std::string& file, size_t x,
 size_t RelightLightGroups(const LightGroupLayout& layout,
                           const std::map<std::string, LightGroupWork>& works, float* pixels,
                           long width, long height, int channels, const std::string& file,
-                          const LightGroupWork& residualWork)
+                          const LightGroupWork& residualWork, LightGroupBeauty rule)
 {
     const size_t w = size_t(std::max(width, 0L)), h = size_t(std::max(height, 0L));
     const size_t n = size_t(channels);
@@ -178,7 +208,8 @@ size_t RelightLightGroups(const LightGroupLayout& layout,
                     for (size_t p = a; p < b; ++p)
                     {
                         mine += Unguarded(layout, pixels + p * n) ? 1 : 0;
-                        if (CheckPixel(layout, pixels + p * n, peak))
+                        if (rule == LightGroupBeauty::RESIDUAL &&
+                            CheckPixel(layout, pixels + p * n, peak))
                         {
                             std::lock_guard<std::mutex> lock(mu);
                             bad = std::min(bad, p);
@@ -218,7 +249,10 @@ size_t RelightLightGroups(const LightGroupLayout& layout,
                                 {
                                     sum += v[g.rgb[c]];
                                 }
-                                residual[3 * p + size_t(c)] = double(v[layout.beauty[c]]) - sum;
+                                residual[3 * p + size_t(c)] =
+                                    rule == LightGroupBeauty::REBUILD
+                                        ? 0.0
+                                        : double(v[layout.beauty[c]]) - sum;
                             }
                         }
                     });

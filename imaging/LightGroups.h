@@ -93,12 +93,33 @@ using LightGroupWork = std::function<void(float*, long, long, int, const int*)>;
 /// on blocks of whole rows, top to bottom. Channels other than the groups'
 /// and the beauty's R, G, B are not touched. Throws Exception naming `file`
 /// and the first pixel at fault, before any pixel changes.
+/// What the relit beauty is made of.
+enum class LightGroupBeauty
+{
+    /// Σ relit groups + the residual (beauty − Σ groups as read), the
+    /// groups checked to be a partition of the beauty: a render's own.
+    RESIDUAL,
+    /// Σ relit groups alone: the beauty rebuilt from them (a denoised
+    /// beauty's groups, noisy, are the image; emission in no group is lost).
+    REBUILD,
+    /// Σ relit groups + (beauty − Σ groups as read), that difference carried
+    /// whatever its sign: a denoised beauty keeps what the denoiser did.
+    DIFFERENCE,
+};
+
+/// "residual", "rebuild", "difference".
+const char* LightGroupBeautyName(LightGroupBeauty beauty);
+/// The rule of a name; throws ParameterError naming {light_group_beauty}.
+LightGroupBeauty ParseLightGroupBeauty(const std::string& name);
+
 /// With `residual`, the residual is relit by it too (one change for the
-/// whole image), as a 3-channel float buffer.
+/// whole image), as a 3-channel float buffer. `beauty` says what the new
+/// beauty is made of; only RESIDUAL checks the groups are a partition.
 size_t RelightLightGroups(const LightGroupLayout& layout,
                           const std::map<std::string, LightGroupWork>& works, float* pixels,
                           long width, long height, int channels, const std::string& file,
-                          const LightGroupWork& residual = nullptr);
+                          const LightGroupWork& residual = nullptr,
+                          LightGroupBeauty beauty = LightGroupBeauty::RESIDUAL);
 
 /// The largest excess of Σ groups over the beauty a partition may show, for
 /// a pixel value `level` (max of |beauty| and Σ |group|) in an image whose

@@ -38,6 +38,24 @@ FrameSetRequest FrameSet(const ApplyRequest& r)
     f.mayReplaceInput = true;
     return f;
 }
+
+/// The request's beauty rule into `apply`, and what the output's
+/// bandlight:transform says of it ("" for the default).
+std::string BeautyRule(const ApplyRequest& r, LightGroupApply& apply)
+{
+    apply.beauty = r.lightGroupBeauty.empty() ? LightGroupBeauty::RESIDUAL
+                                              : ParseLightGroupBeauty(r.lightGroupBeauty);
+    switch (apply.beauty)
+    {
+        case LightGroupBeauty::REBUILD:
+            return "; beauty rebuilt from the relit groups (the residual dropped)";
+        case LightGroupBeauty::DIFFERENCE:
+            return "; beauty: the relit groups + the beauty's difference from the groups as read";
+        case LightGroupBeauty::RESIDUAL:
+            break;
+    }
+    return "";
+}
 ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
 {
     if (r.relight)
@@ -90,7 +108,7 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
     {
         colour.declared = NamedEncoding(r.colorspace);
     }
-    result.applied = "light groups (" + applied + ")";
+    result.applied = "light groups (" + applied + ")" + BeautyRule(r, apply);
     result.native = allNative;
     // The groups checked in the first input's header before any frame: a
     // group that is not there fails at once (a file of one part; the parts
@@ -261,12 +279,19 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
     }
     result.applied = form.applied;
     const BufferWork work = form.work(r.threads);
+    if (!r.lightGroupBeauty.empty() && r.lightGroups.empty() &&
+        !HoldsLightGroups(FirstExistingInput(FrameSet(r))))
+    {
+        throw ParameterError("{light_group_beauty} says what a light-group file's beauty is "
+                             "made of: " + r.input + " has no light groups");
+    }
     if (r.look.empty() && HoldsLightGroups(FirstExistingInput(FrameSet(r))))
     {
         // A change of light on a file with light groups: every group and the
         // residual get it, so the beauty stays their sum.
         LightGroupApply apply;
         apply.everyGroup = work;
+        result.applied += BeautyRule(r, apply);
         FrameNotes notes(r.input, r.output, reporter);
         result.native = form.kernel || form.native;
         const FrameRun run = RunFrameSet(

@@ -61,6 +61,11 @@ struct ApplyRequest
     std::string outsideLook;
     /// Groups the file names otherwise: group → layer prefix, or "r,g,b".
     std::map<std::string, std::string> lightGroupLayers;
+    /// What a relit light-group file's beauty is made of: "" or "residual"
+    /// (Σ relit groups + beauty − Σ groups, the groups a partition of the
+    /// beauty), "rebuild" (Σ relit groups: a denoised beauty) or
+    /// "difference" (the denoised beauty's difference carried as it is).
+    std::string lightGroupBeauty;
     /// The parameters of a change of light the caller was given, by their
     /// ParameterError names ("src", "method", "working_space", ...), in the
     /// order a face lists them: with a look, each is refused by name

@@ -21,6 +21,52 @@ from ._bandlight import _apply
 del _extension_doc
 
 
+def _frames_text(frames):
+    """frames= as the command takes it: "1001-1100" as it is; a range
+    (range(1001, 1101, 2)) or any iterable of frame numbers as their list."""
+    if frames is None or isinstance(frames, str):
+        return frames
+    if isinstance(frames, range):
+        if len(frames) == 0:
+            raise ValueError("frames= is an empty range")
+        last = frames[-1]
+        step = frames.step
+        if step == 1:
+            return f"{frames.start}-{last}"
+        if step > 1:
+            return f"{frames.start}-{last}x{step}"
+    try:
+        numbers = [int(f) for f in frames]
+    except (TypeError, ValueError):
+        raise TypeError("frames= takes \"1001-1100\", a range or a list of frame numbers, "
+                        f"not {type(frames).__name__}") from None
+    if not numbers:
+        raise ValueError("frames= is an empty list")
+    return ",".join(map(str, numbers))
+
+
+def _keywords(function):
+    """The keywords an extension function takes, from its signature line."""
+    import re
+    first = (function.__doc__ or "").split("\n", 1)[0]
+    inside = first[first.find("(") + 1:first.rfind(")")]
+    return [n for n in re.findall(r"(\w+)\s*:", inside)]
+
+
+def _check_keywords(function, given):
+    """Refuses a keyword `function` does not take with one line naming it,
+    the nearest it does take and all of them (as the command does for an
+    option it does not know), instead of pybind11's list of signatures."""
+    import difflib
+    names = _keywords(function)
+    for key in given:
+        if names and key not in names:
+            near = difflib.get_close_matches(key, names, n=1)
+            hint = f" (did you mean {near[0]}=?)" if near else ""
+            raise TypeError(f"{function.__name__.lstrip('_')}() takes no keyword {key}={hint}; "
+                            "it takes " + ", ".join(n + "=" for n in names))
+
+
 def _apply_chunk(input, output, frames, options):
     # A module-level function, so workers unpickle it by name (bandlight's
     # extension functions themselves do not pickle).
@@ -40,6 +86,8 @@ def apply(input, output, *, frames=None, client=None, **options):
     frames (the workers import bandlight and see the same files). The
     summary adds the chunks' counts; "seconds" is the wall time of the call.
     """
+    frames = _frames_text(frames)
+    _check_keywords(_apply, options)
     if client is None:
         return _apply(input, output, frames=frames, **options)
     import os

@@ -233,7 +233,8 @@ def relight(image: npt.ArrayLike, src: LightLike, dst: LightLike, method: str = 
             plates: str = "balanced", adaptation: str = "cat02",
             camera: Optional[StrPath] = None, camera_idt: str = "D55") -> Float32Array: ...
 def relight_light_groups(groups: Mapping[str, npt.ArrayLike],
-                         changes: Mapping[str, Tuple[LightLike, LightLike]], *,
+                         changes: Mapping[str, Union[Tuple[LightLike, LightLike],
+                                                     Tuple[LightLike, LightLike, str]]], *,
                          beauty: Optional[npt.ArrayLike] = None, method: str = "bradford",
                          working_space: str = "acescg", observer: ObserverLike = "1931",
                          training: Optional[RemittancesLike] = None, plates: str = "lit",
@@ -331,7 +332,8 @@ def idt(camera: Optional[StrPath] = None, lights: Union[str, Sequence[StrPath], 
         base: Optional[StrPath] = None, out: Optional[StrPath] = None,
         base_space: Optional[str] = None) -> Dict[str, Any]: ...
 def frame_set(text: str) -> List[int]: ...
-def apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None, client: Any = None,
+def apply(input: StrPath, output: StrPath, *,
+          frames: Optional[Union[str, range, Sequence[int]]] = None, client: Any = None,
           **options: Any) -> ApplyResult: ...
 def _apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           look: Optional[str] = None, config: Optional[StrPath] = None,
@@ -344,7 +346,8 @@ def _apply(input: StrPath, output: StrPath, *, frames: Optional[str] = None,
           threads: int = 0, skip_existing: bool = False,
           keep_going: bool = False,
           light_groups: Optional[Mapping[str, Tuple[LightLike, LightLike]]] = None,
-          light_group_layers: Optional[Mapping[str, str]] = None) -> ApplyResult: ...
+          light_group_layers: Optional[Mapping[str, str]] = None,
+          light_group_beauty: Optional[str] = None) -> ApplyResult: ...
 @overload
 def render(scene: Optional[StrPath] = None, *, text: Optional[str] = None, source: str = "<scene>",
            mode: Optional[str] = None, threads: int = 0, unplanned: bool = False,

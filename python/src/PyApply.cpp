@@ -183,7 +183,8 @@ py::dict Apply(const py::object& input, const py::object& output,
                const std::optional<std::string>& adaptation, const py::object& camera,
                const std::optional<std::string>& cameraIdt, int threads,
                bool skipExisting, bool keepGoing, const py::object& lightGroups,
-               const py::object& lightGroupLayers)
+               const py::object& lightGroupLayers,
+               const std::optional<std::string>& lightGroupBeauty)
 {
     // A render's light group carries its own light's cast: lit unless said.
     const std::string plates =
@@ -200,6 +201,7 @@ py::dict Apply(const py::object& input, const py::object& output,
                       adaptation.has_value(), cameraIdt.has_value()};
     RefuseConflicts(r, change, given, lightGroups);
     r.lightGroupLayers = ToLightGroupLayers(lightGroupLayers);
+    r.lightGroupBeauty = lightGroupBeauty.value_or("");
     if (r.look.empty() && !lightGroups.is_none())
     {
         r.lightGroups = ToLightGroups(lightGroups, change);
@@ -231,6 +233,7 @@ The frames a frame set names, as ``--frames`` reads it: "1001-1100",
           py::arg("threads") = defaults::THREADS, py::arg("skip_existing") = false,
           py::arg("keep_going") = false, py::arg("light_groups") = py::none(),
           py::arg("light_group_layers") = py::none(),
+          py::arg("light_group_beauty") = py::none(),
           (std::string(R"doc(
 Applies a look, or an illuminant change, to an image file or a frame
 sequence through OpenImageIO: the job of ``bandlight apply``. Returns
@@ -261,7 +264,9 @@ of a multi-layer EXR (Blender/Cycles, Arnold or bandlight naming) relit on
 its own with method (or its own, {group: (src, dst, method)}), the beauty written as the relit groups plus the
 residual, everything else kept (docs/lightgroups.md); plates then defaults
 to "lit". light_group_layers: {group: layer prefix or "r,g,b"} for a file
-that names its groups otherwise.
+that names its groups otherwise. light_group_beauty: what the relit beauty is
+made of, "residual" (default), "rebuild" (the relit groups alone: a denoised
+beauty) or "difference" (the denoised beauty's difference carried).
 )doc") + kPlatesDoc)
               .c_str());
 }

@@ -149,15 +149,21 @@ std::map<std::string, jobs::LightGroupWork> ToWorks(const py::dict& changes,
             throw Exception("changes names the light group '" + name +
                             "', which groups does not hold (it has " + have + ")");
         }
-        const py::tuple lights =
-            CastTo<py::tuple>(value, "changes['" + name + "']", "a tuple (src, dst)");
-        if (lights.size() != 2)
+        const py::tuple lights = CastTo<py::tuple>(value, "changes['" + name + "']",
+                                                   "a tuple (src, dst) or (src, dst, method)");
+        if (lights.size() != 2 && lights.size() != 3)
         {
-            throw Exception("changes['" + name + "'] must be (src, dst)");
+            throw Exception("changes['" + name + "'] must be (src, dst) or (src, dst, method), "
+                            "as apply(light_groups=...) takes it");
         }
         const Light from = ToLight(lights[0]);
         const Light to = ToLight(lights[1]);
-        const MethodSpec spec = ToMethod(change.method, change.training, change.plates);
+        // A group's own method, as NAME=FROM:TO@METHOD on the command line.
+        const std::string method =
+            lights.size() == 3
+                ? CastTo<std::string>(lights[2], "changes['" + name + "'][2]", "a method name")
+                : change.method;
+        const MethodSpec spec = ToMethod(method, change.training, change.plates);
         if (from.spectrum.sameGrid(to.spectrum) && from.spectrum.values() == to.spectrum.values())
         {
             continue;
@@ -276,7 +282,8 @@ void AddLightGroups(py::module_& m)
 
 groups: {name: array of R, G, B in its last dimension}, every group the same
 shape (layers of one image, working-space linear RGB). changes: {name: (src,
-dst)}, the lights as relight() takes them; groups not named are carried
+dst)} or {name: (src, dst, method)} (a group's own method, as apply's
+light_groups take it), the lights as relight() takes them; groups not named are carried
 unchanged, and a group relit to its own light too. beauty: the image the
 groups sum to (same shape); what they do not hold, beauty - sum(groups), is
 kept as the residual. None: the sum of the groups.
@@ -284,7 +291,8 @@ kept as the residual. None: the sum of the groups.
 Returns {"beauty": sum of relit groups + residual, "groups": {name: relit
 array}}: plain dicts of numpy arrays, which pickle (for Dask). Raises
 ValueError when the groups sum to more than the beauty beyond float rounding
-(not a partition of it) or hold NaN or infinity, naming the group and pixel.
+(not a partition of it), naming the pixel; NaN and infinity are taken as
+-1e16 and +-1e16, as every pixel path takes them, so the result is finite.
 plates defaults to lit: a render's group carries its own light's cast.)doc");
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -756,4 +757,64 @@ TEST_CASE("apply --look with the options of a change of light names each, as Pyt
     CheckOneLine(r, "--look applies a look of --config as it is: --from, --method, "
                     "--working-space do not apply to it (give the look, or the change of light)");
     CHECK_FALSE(fs::exists(dir + "/out.exr"));
+}
+
+TEST_CASE("A denoised beauty: refused by default, rebuilt or its difference carried when asked",
+          "[cli][mistakes][lightgroups]")
+{
+    // A denoiser smooths the beauty and not the groups: here the groups sum
+    // to more than the beauty (fill doubled), no partition of it.
+    const std::string dir = Folder("denoised");
+    const std::string shot = ArnoldShot(dir + "/denoised.exr", 2.0f);
+    const std::string apply = "apply '" + shot + "' '" + dir + "/out.exr' --light-group key=A:D65 ";
+    CheckOneLine(Bandlight(apply), "sum to more than the beauty");
+    CheckOneLine(Bandlight(apply + "--light-group-beauty denoise"), "--light-group-beauty is "
+                                                                   "residual");
+    // Each channel by its name (EXR orders them as it likes): name -> 12 values.
+    const auto read = [&](const std::string& path, std::string* transform = nullptr)
+    {
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+        REQUIRE(in);
+        const OIIO::ImageSpec& spec = in->spec();
+        if (transform)
+        {
+            *transform = spec.get_string_attribute("bandlight:transform");
+        }
+        std::vector<float> px(size_t(spec.image_pixels()) * size_t(spec.nchannels));
+        REQUIRE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+        std::map<std::string, std::vector<float>> channels;
+        for (int c = 0; c < spec.nchannels; ++c)
+        {
+            for (size_t p = 0; p < 12; ++p)
+            {
+                channels[spec.channelnames[size_t(c)]].push_back(
+                    px[p * size_t(spec.nchannels) + size_t(c)]);
+            }
+        }
+        return channels;
+    };
+    const auto in = read(shot);
+    for (const std::string rule : {"rebuild", "difference"})
+    {
+        INFO(rule);
+        const Result r = Bandlight(apply + "--light-group-beauty " + rule);
+        INFO(r.err);
+        REQUIRE(r.code == 0);
+        std::string transform;
+        const auto out = read(dir + "/out.exr", &transform);
+        CHECK_THAT(transform, Contains(rule == "rebuild" ? "beauty rebuilt from the relit groups"
+                                                         : "the beauty's difference"));
+        for (size_t p = 0; p < 12; ++p)
+        {
+            for (const std::string c : {"R", "G", "B"})
+            {
+                const auto sum = [&](const std::map<std::string, std::vector<float>>& im)
+                { return double(im.at("RGBA_fill." + c)[p]) + im.at("RGBA_key." + c)[p]; };
+                const double difference = in.at(c)[p] - sum(in);
+                CHECK(out.at(c)[p] ==
+                      Approx(rule == "rebuild" ? sum(out) : sum(out) + difference).margin(1e-6));
+            }
+        }
+        fs::remove(dir + "/out.exr");
+    }
 }

@@ -158,3 +158,29 @@ def test_each_group_takes_a_method_of_its_own(tmp_path):
     assert "lists no light group" in cli_error("apply", shot, tmp_path / "bad.exr",
                                                "--light-group-file", tmp_path / "empty.txt")
     assert not (tmp_path / "bad.exr").exists()
+
+
+def test_the_python_face_takes_what_the_docs_show_and_names_its_mistakes(tmp_path):
+    key, fill, beauty = shot()
+    # (src, dst, method), as apply(light_groups=...) takes it.
+    own = bandlight.relight_light_groups({"key": key, "fill": fill},
+                                         {"key": ("A", "D65", "rootpoly")}, beauty=beauty)
+    same = bandlight.relight_light_groups({"key": key, "fill": fill}, {"key": ("A", "D65")},
+                                          beauty=beauty, method="rootpoly")
+    np.testing.assert_array_equal(own["groups"]["key"], same["groups"]["key"])
+    # A keyword apply does not take: one line, the nearest it does take.
+    with pytest.raises(TypeError, match=r"takes no keyword metod= \(did you mean method=\?\)"):
+        bandlight.apply(tmp_path / "nothing.exr", tmp_path / "x.exr", src="A", dst="D65",
+                        metod="rootpoly")
+    # frames= as a range or a list, as a string.
+    from conftest import SCENES
+    for f in (1001, 1002, 1003):
+        bandlight.render(SCENES / "materials_A.yaml", out=tmp_path / f"in.{f}.exr",
+                         preview=False)
+    for i, frames in enumerate(("1001-1003", range(1001, 1004), [1001, 1002, 1003])):
+        summary = bandlight.apply(tmp_path / "in.####.exr", tmp_path / f"out{i}.####.exr",
+                                  frames=frames, src="A", dst="D65")
+        assert summary["frames"] == 3
+    with pytest.raises(TypeError, match="frames= takes"):
+        bandlight.apply(tmp_path / "in.####.exr", tmp_path / "x.####.exr", frames=3.5,
+                        src="A", dst="D65")
