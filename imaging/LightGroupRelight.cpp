@@ -32,6 +32,20 @@ const char* LightGroupBeautyName(LightGroupBeauty beauty)
     return "residual";
 }
 
+std::string LightGroupBeautyNote(LightGroupBeauty beauty)
+{
+    switch (beauty)
+    {
+        case LightGroupBeauty::REBUILD:
+            return "; beauty rebuilt from the relit groups (the residual dropped)";
+        case LightGroupBeauty::DIFFERENCE:
+            return "; beauty: the relit groups + the beauty's difference from the groups as read";
+        case LightGroupBeauty::RESIDUAL:
+            break;
+    }
+    return "";
+}
+
 LightGroupBeauty ParseLightGroupBeauty(const std::string& name)
 {
     for (const LightGroupBeauty b :

@@ -109,6 +109,8 @@ enum class LightGroupBeauty
 
 /// "residual", "rebuild", "difference".
 const char* LightGroupBeautyName(LightGroupBeauty beauty);
+/// What an output's bandlight:transform adds for the rule ("" for RESIDUAL).
+std::string LightGroupBeautyNote(LightGroupBeauty beauty);
 /// The rule of a name; throws ParameterError naming {light_group_beauty}.
 LightGroupBeauty ParseLightGroupBeauty(const std::string& name);
 

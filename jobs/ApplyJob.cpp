@@ -20,42 +20,28 @@ namespace bandlight::jobs
 namespace
 {
 
-/// The frame set's counts into the result.
-void Counted(const FrameRun& run, ApplyResult& result)
+/// The request's rule for a light-group file's beauty.
+LightGroupBeauty BeautyOf(const ApplyRequest& r)
 {
-    result.frames = run.frames;
-    result.skipped = run.skipped;
-    result.failed = run.failed;
-    result.seconds = run.seconds;
-    result.sequence = run.sequence;
+    return r.lightGroupBeauty.empty() ? LightGroupBeauty::RESIDUAL
+                                      : ParseLightGroupBeauty(r.lightGroupBeauty);
 }
 
-/// The frames of a request; an image may be relit in place (the result
-/// keeps its other channels, metadata and parts).
-FrameSetRequest FrameSet(const ApplyRequest& r)
+/// The frames of a light-group apply, each file relit by `apply`, its notes
+/// said once for the set.
+ApplyResult RunLightGroups(const ApplyRequest& r, const LightGroupApply& apply,
+                           const ImageColourRequest& colour, Reporter& reporter,
+                           ApplyResult result)
 {
-    FrameSetRequest f{r.input, r.output, r.frames, r.skipExisting, r.keepGoing};
-    f.mayReplaceInput = true;
-    return f;
+    FrameNotes notes(r.input, r.output, reporter);
+    const FrameRun run = RunFrameSet(
+        FrameSet(r), reporter,
+        [&](const std::string& in, const std::string& out)
+        { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
+    Counted(run, result);
+    return result;
 }
 
-/// The request's beauty rule into `apply`, and what the output's
-/// bandlight:transform says of it ("" for the default).
-std::string BeautyRule(const ApplyRequest& r, LightGroupApply& apply)
-{
-    apply.beauty = r.lightGroupBeauty.empty() ? LightGroupBeauty::RESIDUAL
-                                              : ParseLightGroupBeauty(r.lightGroupBeauty);
-    switch (apply.beauty)
-    {
-        case LightGroupBeauty::REBUILD:
-            return "; beauty rebuilt from the relit groups (the residual dropped)";
-        case LightGroupBeauty::DIFFERENCE:
-            return "; beauty: the relit groups + the beauty's difference from the groups as read";
-        case LightGroupBeauty::RESIDUAL:
-            break;
-    }
-    return "";
-}
 ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
 {
     if (r.relight)
@@ -108,7 +94,8 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
     {
         colour.declared = NamedEncoding(r.colorspace);
     }
-    result.applied = "light groups (" + applied + ")" + BeautyRule(r, apply);
+    apply.beauty = BeautyOf(r);
+    result.applied = "light groups (" + applied + ")" + LightGroupBeautyNote(apply.beauty);
     result.native = allNative;
     // The groups checked in the first input's header before any frame: a
     // group that is not there fails at once (a file of one part; the parts
@@ -123,13 +110,7 @@ ApplyResult ApplyLightGroups(const ApplyRequest& r, Reporter& reporter)
             (void)CheckedLightGroups(apply, first, header);
         }
     }
-    FrameNotes notes(r.input, r.output, reporter);
-    const FrameRun run = RunFrameSet(
-        FrameSet(r), reporter,
-        [&](const std::string& in, const std::string& out)
-        { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
-    Counted(run, result);
-    return result;
+    return RunLightGroups(r, apply, colour, reporter, result);
 }
 
 ApplyResult ApplyMatte(const ApplyRequest& r, Reporter& reporter)
@@ -291,15 +272,10 @@ ApplyResult ApplyImages(const ApplyRequest& r, Reporter& reporter)
         // residual get it, so the beauty stays their sum.
         LightGroupApply apply;
         apply.everyGroup = work;
-        result.applied += BeautyRule(r, apply);
-        FrameNotes notes(r.input, r.output, reporter);
+        apply.beauty = BeautyOf(r);
+        result.applied += LightGroupBeautyNote(apply.beauty);
         result.native = form.kernel || form.native;
-        const FrameRun run = RunFrameSet(
-            FrameSet(r), reporter,
-            [&](const std::string& in, const std::string& out)
-            { notes.add(ApplyLightGroupsToImage(apply, in, out, result.applied, colour), in, out); });
-        Counted(run, result);
-        return result;
+        return RunLightGroups(r, apply, colour, reporter, result);
     }
     // Frames run on several threads at once (RunFrameSet).
     FrameNotes notes(r.input, r.output, reporter);

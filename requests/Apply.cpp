@@ -6,6 +6,23 @@
 namespace bandlight::jobs
 {
 
+FrameSetRequest FrameSet(const ApplyRequest& r)
+{
+    FrameSetRequest f{r.input, r.output, r.frames, r.skipExisting, r.keepGoing};
+    f.mayReplaceInput = true;
+    return f;
+}
+
+void Counted(const FrameRun& run, ApplyResult& result)
+{
+    result.frames = run.frames;
+    result.skipped = run.skipped;
+    result.failed = run.failed;
+    result.seconds = run.seconds;
+    result.sequence = run.sequence;
+}
+
+
 void CheckMatteRequest(const ApplyRequest& r)
 {
     const bool insideIsLook = !r.insideLook.empty();

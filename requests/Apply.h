@@ -101,6 +101,13 @@ struct ApplyResult
 /// others.
 void CheckLookAlone(const ApplyRequest& request);
 
+/// The frames of a request; an image may be relit in place (the result
+/// keeps its other channels, metadata and parts).
+FrameSetRequest FrameSet(const ApplyRequest& request);
+
+/// A frame set's counts into the result.
+void Counted(const FrameRun& run, ApplyResult& result);
+
 /// The matte's options checked against each other, before any file is read.
 void CheckMatteRequest(const ApplyRequest& request);
 
