@@ -97,10 +97,14 @@ struct ImageFilesApi
     /// the part, nothing written.
     /// `drop`, when given, names the channels of a processed part left out
     /// of the output (a spectral render's S0.<λ> channels, which a change
-    /// of its RGB would leave stale).
+    /// of its RGB would leave stale). With `joinParts`, the parts of a
+    /// multi-part file (all one size) go to `process` as one image, their
+    /// channels side by side (a name that repeats across parts prefixed by
+    /// its part's name), and go back each to its part: light groups split
+    /// across parts.
     ImageFilesStatus (*transform)(const std::string& in, const std::string& out,
                                   const PixelProcess& process, const std::string& note,
-                                  bool everyPart, const ChannelFilter& drop);
+                                  bool everyPart, const ChannelFilter& drop, bool joinParts);
     ImageFilesStatus (*write)(const std::string& path, const float* pixels, int width, int height,
                               int channels, const std::vector<std::string>& channelNames,
                               const ImageDescription& description, PixelType type);
@@ -113,7 +117,7 @@ struct ImageFilesApi
     void (*removeTemporaryFiles)() noexcept;
 };
 
-constexpr int kImageFilesApiVersion = 8;
+constexpr int kImageFilesApiVersion = 9;
 
 /// The loaded module's API; throws Exception when it cannot be found, naming
 /// the places looked in (beside the executable, ../lib/bandlight, or

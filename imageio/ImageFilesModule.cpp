@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <memory>
 #include <new>
 
@@ -63,6 +64,18 @@ std::string PartName(const OIIO::ImageSpec& spec, int part)
         name = spec.get_string_attribute("name");
     }
     return "part " + std::to_string(part) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+/// A part's own name as a layer prefix ("key"), or "part<N>" when it has
+/// none.
+std::string PartLayer(const OIIO::ImageSpec& spec, int part)
+{
+    std::string name = spec.get_string_attribute("oiio:subimagename");
+    if (name.empty())
+    {
+        name = spec.get_string_attribute("name");
+    }
+    return name.empty() ? "part" + std::to_string(part) : name;
 }
 
 /// Writes `path` atomically, or straight to `writeAs` when the caller's
@@ -320,9 +333,69 @@ bool DropChannels(OIIO::ImageSpec& spec, const std::vector<float>& pixels,
     return true;
 }
 
+/// The parts of a multi-part file as one image for `process` (light groups
+/// split across parts): every part the same size, channels side by side, a
+/// name that repeats across parts given its part's name before it
+/// ("key.R"). Each part gets its channels back and keeps its layout.
+void ProcessJoined(OIIO::ImageInput& input, const std::vector<OIIO::ImageSpec>& specs,
+                   std::vector<std::vector<float>>& pixels, const PixelProcess& process,
+                   const std::string& in)
+{
+    const OIIO::ImageSpec& first = specs.front();
+    std::vector<std::string> names;
+    std::map<std::string, int> seen;
+    for (const OIIO::ImageSpec& spec : specs)
+    {
+        if (spec.width != first.width || spec.height != first.height ||
+            spec.depth != first.depth || spec.x != first.x || spec.y != first.y)
+        {
+            throw Exception(in + ": its parts differ in size, so their channels cannot be taken "
+                                 "together (light groups split across parts)");
+        }
+        for (const std::string& n : spec.channelnames)
+        {
+            ++seen[n];
+        }
+    }
+    for (size_t p = 0; p < specs.size(); ++p)
+    {
+        for (const std::string& n : specs[p].channelnames)
+        {
+            names.push_back(p > 0 && seen[n] > 1 ? PartLayer(specs[p], int(p)) + "." + n : n);
+        }
+    }
+    const size_t count = size_t(first.image_pixels());
+    const size_t total = names.size();
+    std::vector<float> joined(count * total);
+    const auto each = [&](const auto& copy)
+    {
+        size_t offset = 0;
+        for (size_t p = 0; p < specs.size(); ++p)
+        {
+            const size_t n = size_t(specs[p].nchannels);
+            for (size_t i = 0; i < count; ++i)
+            {
+                copy(&joined[i * total + offset], &pixels[p][i * n], n);
+            }
+            offset += n;
+        }
+    };
+    each([](float* to, const float* from, size_t n) { std::copy_n(from, n, to); });
+    OIIO::ImageSpec spec = first;
+    spec.nchannels = int(total);
+    spec.channelnames = names;
+    spec.channelformats.clear();
+    int rgb[3];
+    FindRgb(spec, rgb);
+    ImageData header = Header(input, spec);
+    process(joined.data(), spec.width, long(spec.height) * std::max(1, spec.depth), int(total),
+            rgb, header);
+    each([](const float* to, float* from, size_t n) { std::copy_n(to, n, from); });
+}
+
 ImageFilesStatus Transform(const std::string& in, const std::string& out,
                            const PixelProcess& process, const std::string& note, bool everyPart,
-                           const ChannelFilter& drop)
+                           const ChannelFilter& drop, bool joinParts)
 {
     return Reported(
         in,
@@ -381,10 +454,28 @@ ImageFilesStatus Transform(const std::string& in, const std::string& out,
             std::vector<OIIO::ImageSpec> outSpecs = specs;  // pixel types, names, metadata
             std::vector<const float*> data;
             std::vector<std::vector<float>> kept(specs.size());
+            const bool joined = multi && joinParts;
+            if (joined)
+            {
+                ProcessJoined(*input, specs, pixels, process, in);
+                any = true;
+            }
             for (size_t p = 0; p < specs.size(); ++p)
             {
                 const OIIO::ImageSpec& spec = specs[p];
                 data.push_back(pixels[p].data());
+                if (joined)
+                {
+                    if (!note.empty())
+                    {
+                        outSpecs[p].attribute("bandlight:transform", note);
+                    }
+                    if (drop && DropChannels(outSpecs[p], pixels[p], drop, kept[p]))
+                    {
+                        data[p] = kept[p].data();
+                    }
+                    continue;
+                }
                 if (multi && !everyPart && !HasRgbNames(spec))
                 {
                     continue;  // carried

@@ -170,7 +170,7 @@ std::string DroppedSpectraNote(const ImageData& header, const std::string& where
 /// image module, without the stale spectral channels. What `process` throws comes back as it was (a
 /// ParameterError spells its parameters per face), not as the module's text.
 void TransformImage(const std::string& in, const std::string& out, const PixelProcess& process,
-                    const std::string& note, bool everyPart)
+                    const std::string& note, bool everyPart, bool joinParts = false)
 {
     std::exception_ptr thrown;
     const ImageFilesStatus status = ImageFiles().transform(
@@ -188,7 +188,7 @@ void TransformImage(const std::string& in, const std::string& out, const PixelPr
                 throw;
             }
         },
-        note, everyPart, StaleSpectralChannel);
+        note, everyPart, StaleSpectralChannel, joinParts);
     if (thrown)
     {
         std::rethrow_exception(thrown);
@@ -495,8 +495,31 @@ std::vector<std::string> ApplyLightGroupsToImage(const LightGroupApply& apply,
                                                  const std::string& note,
                                                  const ImageColourRequest& colour)
 {
-    return ApplyLightGroupsWith(apply, in, out, colour, [&](const PixelProcess& p)
-                                { TransformImage(in, out, p, note, true); });
+    try
+    {
+        return ApplyLightGroupsWith(apply, in, out, colour, [&](const PixelProcess& p)
+                                    { TransformImage(in, out, p, note, true); });
+    }
+    catch (const Exception&)
+    {
+        // No part holds the groups on its own: in a multi-part file they may
+        // be split across parts (an AOV a part), taken together then.
+        ImageData header;
+        if (!ImageFiles().read(in, header, false).message.empty() || header.parts < 2)
+        {
+            throw;
+        }
+        try
+        {
+            return ApplyLightGroupsWith(apply, in, out, colour, [&](const PixelProcess& p)
+                                        { TransformImage(in, out, p, note, true, true); });
+        }
+        catch (const Exception&)
+        {
+            // Not that either: the first error says what is wrong.
+        }
+        throw;
+    }
 }
 
 std::vector<std::string> ApplyToImageData(const BufferWork& work, ImageData& image,

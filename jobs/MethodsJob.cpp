@@ -10,20 +10,6 @@ namespace bandlight::jobs
 
 namespace
 {
-const char* ExactnessName(MethodExactness e)
-{
-    switch (e)
-    {
-        case MethodExactness::LINEAR:
-            return "linear";
-        case MethodExactness::NONLINEAR:
-            return "non-linear";
-        case MethodExactness::REFERENCE:
-            return "reference";
-    }
-    return "?";
-}
-
 /// The name the entry's description is given for: its first default, else
 /// the first name of its syntax.
 std::string FirstName(const MethodEntry& e)
@@ -47,7 +33,7 @@ std::vector<MethodInfo> ListMethods()
     {
         MethodInfo m;
         m.names = e.syntax;
-        m.exactness = ExactnessName(e.exactness);
+        m.exactness = MethodExactnessName(e.exactness);
         m.native = e.native;
         m.needsCamera = e.needsCamera;
         m.takesTraining = e.takesTraining;

@@ -480,6 +480,20 @@ const std::vector<std::string>& LightGroupMethodNames()
     return names;
 }
 
+const char* MethodExactnessName(MethodExactness exactness)
+{
+    switch (exactness)
+    {
+        case MethodExactness::LINEAR:
+            return "linear";
+        case MethodExactness::NONLINEAR:
+            return "non-linear";
+        case MethodExactness::REFERENCE:
+            return "reference";
+    }
+    return "?";
+}
+
 const std::vector<std::string>& PackageMethodNames()
 {
     static const std::vector<std::string> names = []

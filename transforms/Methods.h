@@ -120,6 +120,9 @@ enum class MethodExactness
     REFERENCE,  ///< spectra, not pixels: the exact answer the others are measured against
 };
 
+/// "linear", "non-linear", "reference": as `methods` lists them.
+const char* MethodExactnessName(MethodExactness exactness);
+
 class PixelOp;
 
 /// The lit 3×3 of a linear method: working RGB under `from` → under `to`.

@@ -566,3 +566,99 @@ TEST_CASE("apply on a spectral render leaves out the spectra it would leave stal
     CHECK(again.code == 2);
     CHECK_THAT(again.err, Catch::Contains("has no spectral channels"));
 }
+
+TEST_CASE("Light groups split across the parts of a multi-part EXR are found and keep their parts",
+          "[cli][lightgroups]")
+{
+    // Each AOV a part, as Nuke and Arnold write them: "rgba" (the beauty),
+    // "RGBA_key" and "RGBA_fill", each R, G, B. Relit as the same groups in
+    // one part are, and written back part by part.
+    const int w = 4, h = 3;
+    const auto value = [](int part, size_t p, int c)
+    {
+        const float key = 0.3f + 0.01f * float(p) + 0.05f * float(c);
+        const float fill = 0.2f - 0.02f * float(c);
+        return part == 1 ? key : part == 2 ? fill : key + fill + 0.01f;  // a residual
+    };
+    const std::string parts = Temp("parts.exr");
+    {
+        std::vector<OIIO::ImageSpec> specs;
+        for (const char* name : {"rgba", "RGBA_key", "RGBA_fill"})
+        {
+            OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
+            spec.channelnames = {"R", "G", "B"};
+            spec.attribute("name", name);
+            specs.push_back(spec);
+        }
+        auto out = OIIO::ImageOutput::create(parts);
+        REQUIRE(out);
+        REQUIRE(out->open(parts, int(specs.size()), specs.data()));
+        for (int part = 0; part < 3; ++part)
+        {
+            if (part > 0)
+            {
+                REQUIRE(out->open(parts, specs[size_t(part)], OIIO::ImageOutput::AppendSubimage));
+            }
+            std::vector<float> px(size_t(w * h * 3));
+            for (size_t p = 0; p < size_t(w * h); ++p)
+            {
+                for (int c = 0; c < 3; ++c)
+                {
+                    px[3 * p + size_t(c)] = value(part, p, c);
+                }
+            }
+            REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        }
+        REQUIRE(out->close());
+    }
+    // The same groups in one part.
+    const std::string single = Temp("single.exr");
+    {
+        OIIO::ImageSpec spec(w, h, 9, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = {"R", "G", "B", "RGBA_key.R", "RGBA_key.G", "RGBA_key.B",
+                             "RGBA_fill.R", "RGBA_fill.G", "RGBA_fill.B"};
+        std::vector<float> px(size_t(w * h * 9));
+        for (size_t p = 0; p < size_t(w * h); ++p)
+        {
+            for (int part = 0; part < 3; ++part)
+            {
+                for (int c = 0; c < 3; ++c)
+                {
+                    px[9 * p + size_t(3 * part + c)] = value(part, p, c);
+                }
+            }
+        }
+        auto out = OIIO::ImageOutput::create(single);
+        REQUIRE(out->open(single, spec));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        REQUIRE(out->close());
+    }
+    const std::string change = " --light-group key=A:D65 --method rootpoly --colorspace acescg";
+    const Result r = Bandlight("apply '" + parts + "' '" + Temp("parts_relit.exr") + "'" + change);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    REQUIRE(Bandlight("apply '" + single + "' '" + Temp("single_relit.exr") + "'" + change).code ==
+            0);
+    OIIO::ImageBuf ref(Temp("single_relit.exr"));
+    REQUIRE(ref.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+    for (int part = 0; part < 3; ++part)
+    {
+        OIIO::ImageBuf got(Temp("parts_relit.exr"), part, 0);
+        REQUIRE(got.read(part, 0, true, OIIO::TypeDesc::FLOAT));
+        REQUIRE(got.nchannels() == 3);  // the parts' layout kept
+        for (int y = 0; y < h; ++y)
+        {
+            for (int x = 0; x < w; ++x)
+            {
+                for (int c = 0; c < 3; ++c)
+                {
+                    const std::string name =
+                        std::string(part == 0 ? "" : part == 1 ? "RGBA_key." : "RGBA_fill.") +
+                        "RGB"[c];
+                    const int channel = ref.spec().channelindex(name);
+                    CHECK(got.getchannel(x, y, 0, c) == ref.getchannel(x, y, 0, channel));
+                }
+            }
+        }
+    }
+}
