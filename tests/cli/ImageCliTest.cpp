@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -661,4 +662,53 @@ TEST_CASE("Light groups split across the parts of a multi-part EXR are found and
             }
         }
     }
+}
+
+TEST_CASE("A matte's two sides guard NaN and infinity as every pixel path does", "[cli][matte]")
+{
+    // docs/robustness.md: non-finite inputs give finite outputs (NaN to
+    // -1e16, Inf to +1e16 before the matrix), on either side of a matte.
+    const int w = 6, h = 4;
+    const std::string plate = Temp("nan_plate.exr");
+    const std::string matte = Temp("nan_matte.exr");
+    {
+        OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
+        std::vector<float> px(size_t(w * h * 3), 0.5f);
+        px[3 * (1 * w + 2) + 0] = std::nanf("");                          // outside (x < 3)
+        px[3 * (2 * w + 4) + 1] = std::numeric_limits<float>::infinity();  // inside (x >= 3)
+        auto out = OIIO::ImageOutput::create(plate);
+        REQUIRE(out->open(plate, spec));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        REQUIRE(out->close());
+        OIIO::ImageSpec m(w, h, 1, OIIO::TypeDesc::FLOAT);
+        m.channelnames = {"A"};
+        std::vector<float> weights(size_t(w * h));
+        for (int y = 0; y < h; ++y)
+        {
+            for (int x = 0; x < w; ++x)
+            {
+                weights[size_t(y * w + x)] = x < 3 ? 0.0f : 1.0f;
+            }
+        }
+        auto mo = OIIO::ImageOutput::create(matte);
+        REQUIRE(mo->open(matte, m));
+        REQUIRE(mo->write_image(OIIO::TypeDesc::FLOAT, weights.data()));
+        REQUIRE(mo->close());
+    }
+    const std::string relit = Temp("nan_relit.exr");
+    const Result r = Bandlight("apply '" + plate + "' '" + relit + "' --matte '" + matte +
+                               "' --look-inside A:D65 --look-outside F11:D65");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const OIIO::ImageBuf out = Read(relit);
+    size_t checked = 0;
+    for (OIIO::ImageBuf::ConstIterator<float> it(out); !it.done(); ++it)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            CHECK(std::isfinite(it[c]));
+            ++checked;
+        }
+    }
+    CHECK(checked == size_t(w * h * 3));
 }
