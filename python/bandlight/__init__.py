@@ -67,9 +67,37 @@ def _check_keywords(function, given):
                             "it takes " + ", ".join(n + "=" for n in names))
 
 
+def _checked(function):
+    """The extension function `function` checking its keywords first (its
+    docstring and pybind11 signature kept: `__wrapped__` is the function)."""
+    import functools
+    names = frozenset(_keywords(function))  # read once, not per call
+
+    @functools.wraps(function)
+    def checked(*args, **kwargs):
+        if not names.issuperset(kwargs):
+            _check_keywords(function, kwargs)
+        return function(*args, **kwargs)
+
+    checked.__module__ = __name__
+    checked.__qualname__ = function.__name__
+    return checked
+
+
+def _check_every_function():
+    from . import _bandlight
+    for name in dir(_bandlight):
+        value = getattr(_bandlight, name)
+        if not name.startswith("__") and type(value).__name__ == "builtin_function_or_method" \
+                and _keywords(value):
+            globals()[name] = _checked(value)
+
+
+_check_every_function()
+
+
 def _apply_chunk(input, output, frames, options):
-    # A module-level function, so workers unpickle it by name (bandlight's
-    # extension functions themselves do not pickle).
+    # A module-level function, so workers unpickle it by name.
     return _apply(input, output, frames=frames, **options)
 
 

@@ -99,7 +99,8 @@ def runtime_defaults(obj):
 def callables():
     """(qualified name, object) of every pybind11 function and method."""
     for name in sorted(n for n in dir(bandlight) if not n.startswith("_")):
-        obj = getattr(bandlight, name)
+        # A function checking its keywords first: the extension function inside.
+        obj = getattr(getattr(bandlight, name), "__wrapped__", getattr(bandlight, name))
         if isinstance(obj, type):
             for m, attr in sorted(vars(obj).items()):
                 if callable(attr) and type(attr).__name__ in ("builtin_function_or_method",

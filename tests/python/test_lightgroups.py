@@ -168,7 +168,9 @@ def test_the_python_face_takes_what_the_docs_show_and_names_its_mistakes(tmp_pat
     same = bandlight.relight_light_groups({"key": key, "fill": fill}, {"key": ("A", "D65")},
                                           beauty=beauty, method="rootpoly")
     np.testing.assert_array_equal(own["groups"]["key"], same["groups"]["key"])
-    # A keyword apply does not take: one line, the nearest it does take.
+    # A keyword a function does not take: one line, the nearest it does take.
+    with pytest.raises(TypeError, match=r"takes no keyword metod= \(did you mean method=\?\)"):
+        bandlight.relight_light_groups({"key": key}, {"key": ("A", "D65")}, metod="rootpoly")
     with pytest.raises(TypeError, match=r"takes no keyword metod= \(did you mean method=\?\)"):
         bandlight.apply(tmp_path / "nothing.exr", tmp_path / "x.exr", src="A", dst="D65",
                         metod="rootpoly")
