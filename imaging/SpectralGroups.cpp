@@ -7,6 +7,7 @@
 #include "imaging/LightGroups.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
+#include "transforms/IlluminantChange.h"
 #include "transforms/PixelKernels.h"
 
 namespace bandlight::jobs
@@ -15,6 +16,33 @@ namespace bandlight::jobs
 namespace
 {
 
+/// Every integrated pixel through the guard of every pixel path
+/// (GuardPixel: NaN to -1e16, ±Inf to ±1e16), so that a NaN or an infinity
+/// in a group's spectrum relights as it does in an RGB light group.
+void GuardIntegrated(std::vector<float>& rgb)
+{
+    for (size_t k = 0; k + 2 < rgb.size(); k += 3)
+    {
+        const Vec3 g = GuardPixel(Vec3(rgb[k], rgb[k + 1], rgb[k + 2]));
+        rgb[k] = float(g.x());
+        rgb[k + 1] = float(g.y());
+        rgb[k + 2] = float(g.z());
+    }
+}
+
+/// Marks the pixels whose spectral channels in `layout` hold NaN or ±Inf.
+void MarkNonFinite(const SpectralLayout& layout, const SpectralImage& image,
+                   std::vector<char>& held)
+{
+    for (size_t p = 0; p < held.size(); ++p)
+    {
+        const float* v = image.pixels.data() + p * size_t(image.channels);
+        for (const int c : layout.channels)
+        {
+            held[p] = char(held[p] | !std::isfinite(v[c]));
+        }
+    }
+}
 
 /// The spectral groups of an image: the prefixes P of channels
 /// "P.S0.<λ>" (or "P.T.<λ>"), in channel order.
@@ -90,6 +118,11 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
     std::vector<float> residual(3 * count);
     IntegrateSpectralPixels(beauty, image.pixels.data(), count, image.channels, residual.data(),
                             threads);
+    GuardIntegrated(residual);
+    // Pixels with NaN or infinity in the beauty or a group: guarded, left
+    // out of the partition check, and counted in a note.
+    std::vector<char> held(count, 0);
+    MarkNonFinite(image.layout, image, held);
     std::vector<double> sum(image.layout.channels.size() * count, 0.0);
     for (const std::string& name : out.groups)
     {
@@ -102,7 +135,8 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
                             " against " + image.layout.describe() + ")");
         }
         CheckSpectralPixels(layout, in, image.channelNames, image.pixels.data(), count,
-                            image.channels, image.width);
+                            image.channels, image.width, NonFiniteSpectra::GUARD);
+        MarkNonFinite(layout, image, held);
         for (size_t p = 0; p < count; ++p)
         {
             for (size_t i = 0; i < layout.channels.size(); ++i)
@@ -127,6 +161,8 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
                                 threads);
         IntegrateSpectralPixels(relit, image.pixels.data(), count, image.channels,
                                 out.rgb.back().data(), threads);
+        GuardIntegrated(before);
+        GuardIntegrated(out.rgb.back());
         for (size_t k = 0; k < 3 * count; ++k)
         {
             residual[k] -= before[k];
@@ -141,6 +177,10 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
     double peak = 0.0;
     for (size_t p = 0; p < count; ++p)
     {
+        if (held[p])
+        {
+            continue;
+        }
         for (const int c : image.layout.channels)
         {
             peak = std::max(peak, double(image.pixels[p * size_t(image.channels) + size_t(c)]));
@@ -148,6 +188,10 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
     }
     for (size_t p = 0; p < count; ++p)
     {
+        if (held[p])
+        {
+            continue;
+        }
         for (size_t i = 0; i < image.layout.channels.size(); ++i)
         {
             const double b =
@@ -175,6 +219,14 @@ GroupConversion ConvertLightGroups(const std::string& in, const SpectralImage& i
             b += g[k];
         }
         out.beauty[k] = float(b);
+    }
+    const size_t guarded = size_t(std::count(held.begin(), held.end(), char(1)));
+    if (guarded > 0)
+    {
+        out.notes.push_back(std::to_string(guarded) +
+                            " pixels held NaN or infinite values in the beauty or a group: NaN "
+                            "taken as -1e16 and infinity as +-1e16 after integration, as every "
+                            "pixel path takes them, so every value written is finite");
     }
     return out;
 }

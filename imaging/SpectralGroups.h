@@ -16,7 +16,9 @@ namespace bandlight::jobs
 /// + the residual, integrated as it is) and of each group, `count` pixels
 /// of 3 floats each, on `threads` threads. Throws Exception naming the file
 /// and the group for a group that is not there or not spectral, groups that
-/// sum to more than the beauty, and NaN or negative values.
+/// sum to more than the beauty, and negative values. NaN and infinite
+/// values (the image read with NonFiniteSpectra::GUARD) are guarded after
+/// integration, as RGB light groups guard them, and counted in a note.
 struct GroupConversion
 {
     std::vector<std::string> groups;

@@ -185,18 +185,25 @@ SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int chan
     return c;
 }
 
-void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
-                         const std::vector<std::string>& channelNames, const float* pixels,
-                         size_t count, int channels, int width)
+size_t CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
+                           const std::vector<std::string>& channelNames, const float* pixels,
+                           size_t count, int channels, int width, NonFiniteSpectra nonFinite)
 {
+    size_t held = 0;
     for (size_t p = 0; p < count; ++p)
     {
         const float* v = pixels + p * size_t(channels);
+        bool heldHere = false;
         for (const int c : layout.channels)
         {
             const float x = v[c];
             if (std::isfinite(x) && x >= 0.0f)
             {
+                continue;
+            }
+            if (!std::isfinite(x) && nonFinite == NonFiniteSpectra::GUARD)
+            {
+                heldHere = true;
                 continue;
             }
             const std::string what = std::isnan(x)   ? "NaN"
@@ -211,7 +218,9 @@ void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
                                  ? "; radiance must be finite and not negative"
                                  : "; a remittance must be finite and not negative"));
         }
+        held += heldHere ? 1 : 0;
     }
+    return held;
 }
 
 void CheckIntegratedPixels(const std::string& file, const float* rgb, size_t count, int width)
@@ -310,7 +319,8 @@ ImageData ReadImageData(const std::string& path, bool pixels)
     return image;
 }
 
-SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& options)
+SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& options,
+                                NonFiniteSpectra nonFinite)
 {
     // The header first: a layout that does not parse costs no pixels.
     const ImageData header = ReadImageData(path, false);
@@ -328,10 +338,10 @@ SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& 
     image.channelNames = std::move(data.channelNames);
     image.pixels = std::move(data.pixels);
     CheckSpectralPixels(image.layout, path, image.channelNames, image.pixels.data(),
-                        size_t(image.width) * size_t(image.height), image.channels, image.width);
+                        size_t(image.width) * size_t(image.height), image.channels, image.width,
+                        nonFinite);
     return image;
 }
-
 
 void WriteSpectralImage(const std::string& path, int width, int height, SpectralKind kind,
                         const std::vector<double>& wavelengths, const std::vector<float>& spectra,

@@ -96,12 +96,27 @@ struct SpectralConversion
 SpectralConversion MakeSpectralConversion(const SpectralLayout& layout, int channels,
                                           const SpectralOptions& options);
 
+/// What a spectral value that is NaN or infinite means.
+enum class NonFiniteSpectra
+{
+    /// An error: a spectrum is data, and NaN in it is a broken file
+    /// (`spectral`, `accuracy --image`).
+    REFUSE,
+    /// A pixel value, as every pixel path takes one: the pixel's RGB goes
+    /// through GuardPixel after integration (NaN to -1e16, ±Inf to ±1e16),
+    /// so the light groups of a render follow the policy of plain RGB
+    /// light groups (docs/robustness.md).
+    GUARD,
+};
+
 /// Throws Exception naming `file`, the channel and the pixel ((x, y) for an
-/// image `width` pixels wide, else its index) when a spectral value is NaN,
-/// infinite or negative.
-void CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
-                         const std::vector<std::string>& channelNames, const float* pixels,
-                         size_t count, int channels, int width = 0);
+/// image `width` pixels wide, else its index) when a spectral value is
+/// negative, or NaN or infinite under NonFiniteSpectra::REFUSE. Returns
+/// how many pixels hold a NaN or infinite value (0 under REFUSE).
+size_t CheckSpectralPixels(const SpectralLayout& layout, const std::string& file,
+                           const std::vector<std::string>& channelNames, const float* pixels,
+                           size_t count, int channels, int width = 0,
+                           NonFiniteSpectra nonFinite = NonFiniteSpectra::REFUSE);
 
 /// RGB (3 floats a pixel) of `count` pixels of `channels` floats each, on
 /// `threads` threads: one SIMD dot product per output channel and pixel.
@@ -131,8 +146,10 @@ struct SpectralImage
 ImageData ReadImageData(const std::string& path, bool pixels);
 
 /// Reads a spectral EXR through OpenImageIO and checks its layout and
-/// values (CheckSpectralPixels); throws Exception naming the file.
-SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& options = {});
+/// values (CheckSpectralPixels, NaN and infinity taken as `nonFinite`
+/// says); throws Exception naming the file.
+SpectralImage ReadSpectralImage(const std::string& path, const SpectralOptions& options = {},
+                                NonFiniteSpectra nonFinite = NonFiniteSpectra::REFUSE);
 
 /// The spectral EXR of an image's spectra (Fichet 2021: S0 or T channels,
 /// R, G, B beside, spectralLayoutVersion and emissiveUnits), written with

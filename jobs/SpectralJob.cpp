@@ -275,7 +275,8 @@ SpectralResult ConvertSpectralImages(const SpectralRequest& r, Reporter& reporte
     const bool groups = !r.options.lightGroups.empty();
     const auto one = [&](const std::string& in, const std::string& out)
     {
-        const SpectralImage image = ReadSpectralImage(in, r.options);
+        const SpectralImage image = ReadSpectralImage(
+            in, r.options, groups ? NonFiniteSpectra::GUARD : NonFiniteSpectra::REFUSE);
         if (groups)
         {
             WriteLightGroupFrame(run, in, out, image);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,12 +14,12 @@
 #include <catch2/catch.hpp>
 
 #include "jobs/ApplyJob.h"
+#include "jobs/LightGroupsTestSupport.h"
 #include "jobs/RenderJob.h"
 #include "jobs/SpectralJob.h"
 #include "render/SceneColour.h"
 #include "spectral/Colorimetry.h"
 #include "spectral/RgbSpaces.h"
-#include "jobs/LightGroupsTestSupport.h"
 
 using namespace bandlight;
 using namespace bandlight::jobs;
@@ -182,6 +183,59 @@ TEST_CASE(
         {
             CHECK(std::abs(s[i] - beauty[i]) <= 1e-6 * peak);
         }
+    }
+
+    SECTION("NaN and infinity in a group or the beauty are guarded, counted, never written")
+    {
+        // The policy of RGB light groups (docs/robustness.md): a non-finite
+        // value is a pixel value, taken as +-1e16 after integration; the
+        // other pixels relight as before.
+        Exr::Part broken = file;
+        const auto at = [&](size_t p, const std::string& c) -> float&
+        {
+            const auto& names = broken.spec.channelnames;
+            const auto i = std::find(names.begin(), names.end(), c);
+            REQUIRE(i != names.end());
+            return broken.pixels[p * size_t(broken.spec.nchannels) + size_t(i - names.begin())];
+        };
+        at(0, "key." + SpectralChannelName(SpectralKind::EMISSIVE, 550.0)) = std::nanf("");
+        at(1, SpectralChannelName(SpectralKind::EMISSIVE, 500.0)) =
+            std::numeric_limits<float>::infinity();
+        const std::string path = dir + "/broken.exr";
+        auto out = OIIO::ImageOutput::create(path);
+        REQUIRE(out);
+        REQUIRE(out->open(path, broken.spec));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, broken.pixels.data()));
+        REQUIRE(out->close());
+
+        struct Notes : Reporter
+        {
+            std::vector<std::string> lines;
+            void note(const std::string& line) override { lines.push_back(line); }
+        } notes;
+        SpectralRequest g = sr;
+        g.files.input = path;
+        g.files.output = dir + "/guarded.exr";
+        ConvertSpectralImages(g, notes);
+        const Exr::Part guarded = ReadExr(g.files.output)[0];
+        for (const float v : guarded.pixels)
+        {
+            REQUIRE(std::isfinite(v));
+        }
+        CHECK(std::any_of(
+            notes.lines.begin(), notes.lines.end(),
+            [](const std::string& l)
+            { return l.find("2 pixels held NaN or infinite values") != std::string::npos; }));
+        // Every other pixel is what the clean file gives.
+        for (size_t p = 2; p < guarded.count(); ++p)
+        {
+            for (const char* c : {"R", "G", "B", "key.R", "fill.B"})
+            {
+                REQUIRE(guarded.at(p, c) == relit.at(p, c));
+            }
+        }
+        // The NaN in the key group: its RGB guarded to -1e16 in each channel.
+        CHECK(guarded.at(0, "key.G") == float(-1e16));
     }
 
     SECTION("per-group RGB relighting beats one global look on the beauty")
