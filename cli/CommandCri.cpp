@@ -48,7 +48,7 @@ void AddCriCommand(CLI::App& app)
 {
     auto o = std::make_shared<CriOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "cri", "Correlated colour temperature, Duv and colour rendering index (Ra, R1-R14)");
+        "cri", "Correlated colour temperature, Duv and colour rendering index (Ra, R1-R15)");
     cmd->add_option("--illuminant", o->illuminant, "Built-in illuminant or spectrum file")
         ->required();
     cmd->add_flag("--json", o->json, "Write JSON");

@@ -10,6 +10,7 @@ namespace bandlight::cli
 void AddTablesCommand(CLI::App& app);
 void AddXyzCommand(CLI::App& app);
 void AddCriCommand(CLI::App& app);
+void AddQualityCommand(CLI::App& app);
 void AddIdtCommand(CLI::App& app);
 void AddConfigCommand(CLI::App& app);
 void AddLutCommand(CLI::App& app);

@@ -37,6 +37,7 @@ void AddCommands(CLI::App& app)
     bandlight::cli::AddTablesCommand(app);
     bandlight::cli::AddXyzCommand(app);
     bandlight::cli::AddCriCommand(app);
+    bandlight::cli::AddQualityCommand(app);
     bandlight::cli::AddIdtCommand(app);
     bandlight::cli::AddConfigCommand(app);
     bandlight::cli::AddLutCommand(app);

@@ -122,7 +122,7 @@ ColourRendering ComputeColourRendering(const Spectrum& illuminant)
     out.outsideTolerance = std::abs(cct.duv) > 5.4e-3;
     const std::vector<NamedSpectrum>& tcs = TestColourSamples();
     double sum8 = 0.0;
-    for (size_t i = 0; i < 14; ++i)
+    for (size_t i = 0; i < out.r.size(); ++i)
     {
         const Vec3 xyzR = ref(tcs[i].spectrum);
         const Vec3 xyzK = test(tcs[i].spectrum);

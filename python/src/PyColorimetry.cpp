@@ -347,7 +347,7 @@ Floats for one colour (3,), arrays (...) for (..., 3).
         },
         py::arg("illuminant"), R"doc(
 CIE 13.3-1995 colour rendering of a light, as ``bandlight cri --json``:
-{"illuminant", "cct_K", "duv", "Ra", "R" (R1-R14), "outside_duv_tolerance"}.
+{"illuminant", "cct_K", "duv", "Ra", "R" (R1-R15), "outside_duv_tolerance"}.
 The reference is a Planckian radiator below 5000 K and CIE daylight from
 5000 K on; outside_duv_tolerance is |Duv| > 5.4e-3, where CIE 13.3 does not
 consider Ra meaningful. Raises ValueError for a CCT outside 1000-25000 K.

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "farm/Reporter.h"
+#include "spectral/LightScores.h"
+
+namespace bandlight::jobs
+{
+
+/// `quality`: every light-quality score of the registry
+/// (spectral/LightScores.h) for one light or many.
+struct QualityRequest
+{
+    /// Lights as `--from` takes them: a built-in name (D65, F11, 3200K,
+    /// D5600), daylight:K, planck:K, or a spectrum file (CSV, CGATS .sp/.ti3).
+    std::vector<std::string> lights;
+    /// A reference light the same way: TLMF is computed against it, and
+    /// SSI uses it instead of its default reference. Empty: none.
+    std::string reference;
+    /// FILE.png or FILE.svg: each light's spectrum against its references
+    /// and the TM-30 colour vector graphic; empty: no plot.
+    std::string plot;
+    int threads = 0;  ///< 0: all cores
+};
+
+struct QualityResult
+{
+    std::vector<LightQuality> lights;  ///< in the order asked
+    std::string plot;                  ///< the plot written, if any
+};
+
+/// Scores every light of `request`. Every light and the plot path are
+/// checked before any score is computed: ParameterError for no light or a
+/// plot path that is not .png/.svg, Exception naming the light or file
+/// that cannot be read or has no power in the visible range.
+QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter = SilentReporter());
+
+}  // namespace bandlight::jobs
