@@ -27,25 +27,32 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
     {
         lights.push_back(ResolveIlluminant(l, reporter));
     }
+    const Light reference =
+        request.reference.empty() ? Light() : ResolveIlluminant(request.reference, reporter);
+    QualityResult result;
+    result.lights = ScoreLights(lights, reference, request.threads);
+    return result;
+}
+
+std::vector<LightQuality> ScoreLights(const std::vector<Light>& lights, const Light& reference,
+                                      int threads)
+{
     ScoreContext context;
-    if (!request.reference.empty())
+    if (!reference.name.empty())
     {
-        const Light reference = ResolveIlluminant(request.reference, reporter);
         context.reference = reference.spectrum;
         context.referenceName = reference.name;
     }
-    QualityResult result;
-    result.lights.resize(lights.size());
+    std::vector<LightQuality> scored(lights.size());
     std::vector<std::string> errors(lights.size());
-    ParallelFor(lights.size(), request.threads,
+    ParallelFor(lights.size(), threads,
                 [&](size_t a, size_t b)
                 {
                     for (size_t i = a; i < b; ++i)
                     {
                         try
                         {
-                            result.lights[i] =
-                                ScoreLight(lights[i].name, lights[i].spectrum, context);
+                            scored[i] = ScoreLight(lights[i].name, lights[i].spectrum, context);
                         }
                         catch (const Exception& e)
                         {
@@ -60,7 +67,7 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
             throw Exception(e);
         }
     }
-    return result;
+    return scored;
 }
 
 }  // namespace bandlight::jobs

@@ -6,6 +6,7 @@
 
 #include "farm/Reporter.h"
 #include "spectral/LightScores.h"
+#include "transforms/Methods.h"
 
 namespace bandlight::jobs
 {
@@ -37,5 +38,12 @@ struct QualityResult
 /// plot path that is not .png/.svg, Exception naming the light or file
 /// that cannot be read or has no power in the visible range.
 QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter = SilentReporter());
+
+/// The scores of lights already resolved (`reference`: none when its name
+/// is empty), on `threads` threads (0: all cores): what MakeQuality and
+/// the Python module's quality() compute. Throws Exception naming the
+/// first light that cannot be scored.
+std::vector<LightQuality> ScoreLights(const std::vector<Light>& lights, const Light& reference,
+                                      int threads = 0);
 
 }  // namespace bandlight::jobs

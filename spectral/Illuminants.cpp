@@ -158,9 +158,21 @@ Spectrum BuiltinIlluminant(const std::string& name)
     {
         return Planckian(v);
     }
+    // As lighting data sheets and spectrometers name them: CIE daylight
+    // and a Planckian radiator at an exact CCT (no 1.4388/1.438 nominal
+    // correction: daylight:6500 is 6500 K, D65 is 6504 K).
+    if (u.rfind("DAYLIGHT:", 0) == 0 && ParsePositive(u.substr(9), v))
+    {
+        return Daylight(v);
+    }
+    if (u.rfind("PLANCK:", 0) == 0 && ParsePositive(u.substr(7), v))
+    {
+        return Planckian(v);
+    }
     throw Exception("unknown illuminant '" + name +
                     "' (built-in: A, C, D50, D55, D65, D75, Dnn, E, F1-F12, "
-                    "a blackbody as 3200K or BB3200, or a spectrum file)");
+                    "a blackbody as 3200K, BB3200 or planck:3200, CIE daylight as "
+                    "daylight:5600, or a spectrum file)");
 }
 
 Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
@@ -184,7 +196,8 @@ Spectrum UsableIlluminant(const Spectrum& illuminant, const std::string& source)
         throw Exception(source + ": an illuminant of " + std::to_string(illuminant.size()) +
                         " sample" + (illuminant.size() == 1 ? "" : "s") +
                         " cannot be integrated honestly: give at least " +
-                        std::to_string(kFewestSamples) + " (every 100 nm over 380–780 nm at "
+                        std::to_string(kFewestSamples) +
+                        " (every 100 nm over 380–780 nm at "
                         "most; the CIE tabulates lights every 5 nm)");
     }
     // And no wider apart than those five: samples thousands of nm apart say

@@ -41,7 +41,8 @@ double DaylightNominalCct(double hundreds) noexcept;
 
 /// A built-in illuminant by case-insensitive name: the tabulated A, C, D50,
 /// D55, D65, E, F1–F12; D75 and any other "Dnn" derived from the daylight
-/// basis; "3200K" / "BB3200" a Planckian radiator. Throws Exception naming
+/// basis; "3200K" / "BB3200" / "planck:3200" a Planckian radiator;
+/// "daylight:5600" CIE daylight at exactly that CCT. Throws Exception naming
 /// the choices when the name is unknown.
 Spectrum BuiltinIlluminant(const std::string& name);
 

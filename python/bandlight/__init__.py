@@ -16,7 +16,7 @@ with the message the ``bandlight`` command prints.
 from ._bandlight import *  # noqa: F401,F403  (the extension holds the whole API)
 from ._bandlight import __doc__ as _extension_doc, __version__  # noqa: F401
 
-from ._bandlight import _apply
+from ._bandlight import _apply, _quality
 
 del _extension_doc
 
@@ -143,3 +143,49 @@ def apply(input, output, *, frames=None, client=None, **options):
                "failed": [f for r in results for f in r["failed"]],
                "seconds": time.perf_counter() - start}
     return summary
+
+
+import dataclasses as _dataclasses
+
+
+@_dataclasses.dataclass(frozen=True)
+class Quality:
+    """The light-quality scores of one light, as ``bandlight quality --json``
+    gives them (docs/quality.md). A score its standard gives no value for
+    is None, and ``warnings`` says why; each score is a dict of its named
+    values ("Ra", "R": [R1..R15]; "Rf", "Rg", "Rf_h": [16 bins], ...) and
+    "reference" when it compares with one. Plain data: it pickles, so a
+    farm or Dask worker can return it."""
+    light: str
+    cct: float
+    duv: float
+    cri: dict
+    cie2017: dict
+    tm30: dict
+    ssi: dict
+    tlci: dict
+    tlmf: dict
+    warnings: tuple
+
+
+Quality.__init__.__doc__ = """A record of each score as the JSON of ``bandlight quality`` holds it
+(bandlight.quality() makes them; None for a score not given)."""
+
+
+def quality(light, reference=None, *, threads=0):
+    """The light-quality scores of a light, or of each light of a list: CCT
+    and Duv, CIE 13.3 Ra/R1-R15, CIE 224:2017 Rf, TM-30 Rf/Rg and hue bins,
+    SSI, TLCI-2012, and TLMF against ``reference`` (which SSI then uses
+    too). A light is a name ("D65", "3200K", "daylight:5600",
+    "planck:3200"), a spectrum file or a Spectrum. Returns a Quality, or a
+    list of them for a list; the lights are scored on ``threads`` threads
+    (0: all cores) with the GIL released."""
+    import json
+    many = isinstance(light, (list, tuple))
+    lights = list(light) if many else [light]
+    names = {f.name for f in _dataclasses.fields(Quality)}
+    records = []
+    for d in json.loads(_quality(lights, reference, threads)):
+        d["warnings"] = tuple(d.get("warnings", ()))
+        records.append(Quality(**{k: d.get(k) for k in names}))
+    return records if many else records[0]

@@ -6,6 +6,7 @@ keyword-only marker here matches the extension.
 """
 
 import os
+from dataclasses import dataclass
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, TypedDict, Union, overload
 
 import numpy as np
@@ -135,6 +136,25 @@ def delta_e2000(lab1: npt.ArrayLike, lab2: npt.ArrayLike, kL: float = 1.0, kC: f
                 kH: float = 1.0) -> Union[float, FloatArray]: ...
 def cct(xyz: npt.ArrayLike) -> Tuple[Union[float, FloatArray], Union[float, FloatArray]]: ...
 def cri(illuminant: LightLike) -> CriResult: ...
+
+@dataclass(frozen=True)
+class Quality:
+    light: str
+    cct: float
+    duv: float
+    cri: Optional[Dict[str, Any]]
+    cie2017: Optional[Dict[str, Any]]
+    tm30: Optional[Dict[str, Any]]
+    ssi: Optional[Dict[str, Any]]
+    tlci: Optional[Dict[str, Any]]
+    tlmf: Optional[Dict[str, Any]]
+    warnings: Tuple[str, ...]
+    def __init__(self, light: str, cct: float, duv: float, cri: Optional[Dict[str, Any]], cie2017: Optional[Dict[str, Any]], tm30: Optional[Dict[str, Any]], ssi: Optional[Dict[str, Any]], tlci: Optional[Dict[str, Any]], tlmf: Optional[Dict[str, Any]], warnings: Tuple[str, ...]) -> None: ...
+
+@overload
+def quality(light: LightLike, reference: Optional[LightLike] = None, *, threads: int = 0) -> Quality: ...
+@overload
+def quality(light: Sequence[LightLike], reference: Optional[LightLike] = None, *, threads: int = 0) -> List[Quality]: ...
 def adaptation_matrix(src_white: npt.ArrayLike, dst_white: npt.ArrayLike, method: str = "bradford") -> FloatArray: ...
 def rgb_spaces() -> List[RgbSpaceInfo]: ...
 def rgb_to_xyz_matrix(space: str = "acescg") -> FloatArray: ...

@@ -4,9 +4,11 @@
 // arrays of colours (..., 3) with the GIL released around the loops.
 #include "PyBandlight.h"
 #include "jobs/ColourJobs.h"
+#include "jobs/QualityJob.h"
+#include "report/LightQualityReport.h"
+#include "requests/Defaults.h"
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/ColourRendering.h"
-#include "requests/Defaults.h"
 
 namespace bandlight::python
 {
@@ -198,7 +200,8 @@ Call it with a Spectrum (shape (3,)), a sequence of Spectrum (N, 3), or an
 array of remittance samples (..., K) on ``wavelengths`` (..., 3); arrays are
 integrated with the GIL released.
 )doc")
-        .def(py::init(&MakeIntegrator), py::arg("illuminant"), py::arg("observer") = defaults::OBSERVER,
+        .def(py::init(&MakeIntegrator), py::arg("illuminant"),
+             py::arg("observer") = defaults::OBSERVER,
              "The weights of a light (a name or file, an os.PathLike or a Spectrum) on its own\n"
              "grid, for observer \"1931\" or \"1964\".")
         .def_property_readonly(
@@ -305,8 +308,8 @@ void AddColourDifferences(py::module_& m)
             return ReducePairs(
                 a, b, [=](const Vec3& p, const Vec3& q) { return DeltaE2000(p, q, kL, kC, kH); });
         },
-        py::arg("lab1"), py::arg("lab2"), py::arg("kL") = defaults::CIEDE2000_K, py::arg("kC") = defaults::CIEDE2000_K,
-        py::arg("kH") = defaults::CIEDE2000_K, R"doc(
+        py::arg("lab1"), py::arg("lab2"), py::arg("kL") = defaults::CIEDE2000_K,
+        py::arg("kC") = defaults::CIEDE2000_K, py::arg("kH") = defaults::CIEDE2000_K, R"doc(
 CIEDE2000 (CIE 142-2001, with the notes of Sharma, Wu & Dalal 2005) of
 CIELAB colour pairs (..., 3) broadcast together: a float for one pair, else
 an array of shape (...). Agrees with all 34 pairs of Sharma's table to 5e-5.
@@ -354,6 +357,34 @@ consider Ra meaningful. Raises ValueError for a CCT outside 1000-25000 K.
 )doc");
 }
 
+/// `quality`: the JSON of the score registry, made typed by the package
+/// (bandlight.quality builds its Quality records from it).
+void AddQuality(py::module_& m)
+{
+    m.def(
+        "_quality",
+        [](const py::object& lights, const py::object& reference, int threads)
+        {
+            std::vector<Light> resolved;
+            for (const py::handle& l : lights)
+            {
+                resolved.push_back(ToLight(l));
+            }
+            const Light ref = reference.is_none() ? Light() : ToLight(reference);
+            std::string json;
+            {
+                py::gil_scoped_release release;
+                json = QualityJson(jobs::ScoreLights(resolved, ref, threads));
+            }
+            return json;
+        },
+        py::arg("lights"), py::arg("reference") = py::none(), py::arg("threads") = 0, R"doc(
+The scores of ``bandlight quality --json`` for a list of lights (names,
+daylight:K, planck:K, files or Spectrum objects) as its JSON text, the GIL
+released; bandlight.quality() returns them as Quality records.
+)doc");
+}
+
 /// Chromatic adaptation between two whites.
 void AddChromaticAdaptation(py::module_& m)
 {
@@ -365,7 +396,8 @@ void AddChromaticAdaptation(py::module_& m)
                 Eigen::MatrixXd(AdaptationMatrix(ToVec3(src, "src_white"), ToVec3(dst, "dst_white"),
                                                  ParseAdaptationMethod(method))));
         },
-        py::arg("src_white"), py::arg("dst_white"), py::arg("method") = defaults::WHITE_ADAPTATION, R"doc(
+        py::arg("src_white"), py::arg("dst_white"), py::arg("method") = defaults::WHITE_ADAPTATION,
+        R"doc(
 The 3x3 that maps XYZ seen under src_white to the corresponding XYZ under
 dst_white: M^-1 diag(M dst / M src) M. method: "vonkries" (XYZ scaling),
 "bradford", "cat02" or "sharp". Whites on any common scale.
@@ -419,6 +451,7 @@ void AddColorimetry(py::module_& m)
     AddColourConversions(m);
     AddColourDifferences(m);
     AddLightQuality(m);
+    AddQuality(m);
     AddChromaticAdaptation(m);
     AddRgbSpaces(m);
 }

@@ -139,3 +139,28 @@ def test_chromatic_adaptation_and_rgb_spaces():
     # ACEScg: S-2014-004's matrix.
     np.testing.assert_allclose(bandlight.rgb_to_xyz_matrix("ap1")[0],
                                [0.6624541811, 0.1340042065, 0.1561876870], atol=1e-9)
+
+
+def test_quality_equals_the_command_and_pickles():
+    import pickle
+    lights = ["F2", "F11", "planck:3200"]
+    by_cli = cli_json("quality", *lights, "--reference", "D65", "--json")
+    scored = bandlight.quality(lights, reference="D65")
+    assert [q.light for q in scored] == [d["light"] for d in by_cli]
+    for q, d in zip(scored, by_cli):
+        assert q.cct == pytest.approx(d["cct"], rel=1e-12)
+        assert q.duv == pytest.approx(d["duv"], rel=1e-12, abs=1e-15)
+        assert q.cri == d["cri"]
+        assert list(q.warnings) == d["warnings"]
+        assert pickle.loads(pickle.dumps(q)) == q
+    # One light gives one record; a Spectrum is a light too.
+    one = bandlight.quality(bandlight.illuminant("F11"))
+    assert round(one.cri["Ra"]) == 83  # CIE 15:2004 Table T.8.2
+    assert len(one.cri["R"]) == 15
+
+
+def test_quality_refuses_what_it_cannot_score():
+    with pytest.raises(ValueError, match="unknown illuminant 'nolight'"):
+        bandlight.quality("nolight")
+    with pytest.raises(TypeError):
+        bandlight.quality("F2", refrence="A")
