@@ -25,7 +25,9 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
     std::vector<Light> lights;
     for (const std::string& l : request.lights)
     {
+        // Named as the user gave it: a file's spectrum is often called "1".
         lights.push_back(ResolveIlluminant(l, reporter));
+        lights.back().name = l;
     }
     const Light reference =
         request.reference.empty() ? Light() : ResolveIlluminant(request.reference, reporter);

@@ -150,7 +150,7 @@ void CheckPlotPath(const std::string& output)
 }
 
 void RunGnuplot(const std::string& script, const std::string& data, const std::string& output,
-                OutputSet* outputs)
+                OutputSet* outputs, PlotSize size)
 {
     CheckPlotPath(output);
     const bool svg = PlotExtension(output) == ".svg";
@@ -163,8 +163,9 @@ void RunGnuplot(const std::string& script, const std::string& data, const std::s
     // live beside the image under AtomicFile's registered temporary names.
     AtomicFile scriptFile(image.tempPath() + ".gp", AtomicFile::Scratch{});
     AtomicFile errFile(image.tempPath() + ".err", AtomicFile::Scratch{});
-    scriptFile.stream() << (svg ? "set terminal svg size 1000,650 dynamic font 'Sans,12'\n"
-                                : "set terminal pngcairo size 1000,650 font 'Sans,11'\n")
+    const std::string wh = std::to_string(size.width) + "," + std::to_string(size.height);
+    scriptFile.stream() << (svg ? "set terminal svg size " + wh + " dynamic font 'Sans,12'\n"
+                                : "set terminal pngcairo size " + wh + " font 'Sans,11'\n")
                         << "set termoption noenhanced\n"
                         << "$bandlight_data << EOD\n"
                         << data << (data.empty() || data.back() == '\n' ? "" : "\n") << "EOD\n"

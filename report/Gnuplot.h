@@ -44,7 +44,13 @@ void CheckPlotPath(const std::string& output);
 /// removes every temporary file. Throws Exception with gnuplot's last
 /// message on failure, or when gnuplot is not installed.
 /// With `outputs`, the image joins that set of outputs (the caller commits).
+/// The image is `width` × `height` pixels (an SVG's size in points).
+struct PlotSize
+{
+    int width = 1000;
+    int height = 650;
+};
 void RunGnuplot(const std::string& script, const std::string& data, const std::string& output,
-                OutputSet* outputs = nullptr);
+                OutputSet* outputs = nullptr, PlotSize size = {});
 
 }  // namespace bandlight

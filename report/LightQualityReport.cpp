@@ -269,8 +269,10 @@ std::string QualityText(const std::vector<LightQuality>& lights)
         const LightQuality& q = lights[i];
         const bool warned = !Warnings(q).empty();
         anyWarning = anyWarning || warned;
-        std::string name =
-            q.light.size() > nameWidth ? q.light.substr(0, nameWidth - 1) + "~" : q.light;
+        // A long name (a file's path) keeps its end, where files differ.
+        const std::string name = q.light.size() > nameWidth
+                                     ? "~" + q.light.substr(q.light.size() - nameWidth + 1)
+                                     : q.light;
         // A light with warnings is marked with its number, the warnings
         // listed under the table by that number.
         std::snprintf(buf, sizeof buf, "%-4s %-*s",
