@@ -234,16 +234,24 @@ std::string QualityText(const std::vector<LightQuality>& lights)
         }
         const bool used = std::any_of(lights.begin(), lights.end(),
                                       [&](const LightQuality& q) { return q.score(e.key); });
-        for (const std::string& ref : Split(e.headline))
+        for (std::string ref : Split(e.headline))
         {
+            // "field[=Header][:decimals]" (spectral/LightScores.h).
+            int decimals = 1;
+            if (const size_t colon = ref.find(':'); colon != std::string::npos)
+            {
+                decimals = std::stoi(ref.substr(colon + 1));
+                ref.resize(colon);
+            }
+            std::string header = ref;
+            if (const size_t eq = ref.find('='); eq != std::string::npos)
+            {
+                header = ref.substr(eq + 1);
+                ref.resize(eq);
+            }
             if (used)
             {
-                const bool scale = ref == "cct" || ref == "duv";
-                const std::string header = ref == "value" ? e.label
-                                           : ref == "cct" ? "CCT K"
-                                           : ref == "duv" ? "Duv"
-                                                          : ref;
-                columns.push_back({e.key, ref, header, ref == "duv" ? 4 : scale ? 0 : 1});
+                columns.push_back({e.key, ref, header, decimals});
             }
         }
     }

@@ -6,6 +6,7 @@
 #include "spectral/Colorimetry.h"
 #include "spectral/ColourRendering.h"
 #include "spectral/Exception.h"
+#include "spectral/TelevisionLighting.h"
 
 namespace bandlight
 {
@@ -66,16 +67,71 @@ Score CriScore(const Spectrum& light, const ScoreContext&)
     return s;
 }
 
+/// A TLCI or TLMF result as a score: Qa (TLCI) or the factor (TLMF), ΔEa,
+/// and ΔE00 per chart patch (null where Tech 3355 leaves a patch out).
+Score TelevisionScore(const char* key, const char* value, const TelevisionLightingScore& t)
+{
+    Score s{key, {Value(value, t.qa), Value("delta_Ea", t.deltaEa)}, t.referenceName, t.warnings};
+    std::vector<std::string> labels;
+    for (size_t i = 0; i < t.deltaE.size(); ++i)
+    {
+        labels.push_back("delta_E" + std::to_string(i + 1));
+    }
+    s.fields.push_back(List("delta_E", t.deltaE, labels));
+    return s;
+}
+
+/// A score that needs a white balance a light cannot give (a red line)
+/// has no value; the reason is its warning.
+template <typename Compute>
+Score Guarded(const char* key, Compute&& compute)
+{
+    try
+    {
+        return compute();
+    }
+    catch (const Exception& e)
+    {
+        return {key, {}, "", {std::string("no value: ") + e.what()}};
+    }
+}
+
+Score TlciScore(const Spectrum& light, const ScoreContext&)
+{
+    return Guarded("tlci", [&] { return TelevisionScore("tlci", "Qa", ComputeTlci(light)); });
+}
+
+Score TlmfScore(const Spectrum& light, const ScoreContext& context)
+{
+    return Guarded("tlmf",
+                   [&]
+                   {
+                       return TelevisionScore(
+                           "tlmf", "value",
+                           ComputeTlmf(light, *context.reference, context.referenceName));
+                   });
+}
+
 // clang-format off
 const std::vector<LightScoreEntry> kScores = {
     {"cct", "CCT", "Correlated colour temperature and Duv", "CIE 15:2004 §9.5",
      "The temperature of the Planckian radiator nearest in CIE 1960 (u, v), and the signed "
      "distance from it (positive above the locus, towards green), CIE 1931 observer.",
-     "cct,duv", false, true, CctScore},
+     "cct=CCT K:0,duv=Duv:4", false, true, CctScore},
     {"cri", "CRI", "Colour rendering index", "CIE 13.3-1995 (R15: JIS Z 8726)",
      "Ra, the mean of R1-R8, and R1-R15: 100 - 4.6 ΔE in CIE 1964 U*V*W* of the test colour "
      "samples under the light against a Planckian (< 5000 K) or daylight reference at its CCT.",
      "Ra,R9", false, false, CriScore},
+    {"tlci", "TLCI", "Television lighting consistency index", "EBU Tech 3355 (TLCI-2012)",
+     "Qa = 100 / (1 + (ΔEa / 3.16)^2.4): ΔE00 of the 18 coloured ColorChecker patches seen by "
+     "the EBU standard camera (balanced on each light) and shown on a BT.709 display, under the "
+     "light against Tech 3355's Planckian/daylight reference at its CCT.",
+     "Qa=TLCI", false, false, TlciScore},
+    {"tlmf", "TLMF", "Television luminaire matching factor", "EBU Tech 3355 (TLMF-2013), EBU R 137",
+     "TLCI's camera and display with the reference light the user names: the camera balanced "
+     "on the reference, the light seen through that balance at matched exposure, all 24 "
+     "patches scored.",
+     "value=TLMF", true, false, TlmfScore},
 };
 // clang-format on
 

@@ -59,8 +59,10 @@ struct LightScoreEntry
     const char* name;        ///< "CIE 13.3 colour rendering index"
     const char* standard;    ///< "CIE 13.3-1995", with the edition
     const char* definition;  ///< one sentence: what it measures, against what
-    /// The values a one-line table shows for it, comma-separated: field
-    /// names ("Ra") or labels of list elements ("R9"); nullptr for none.
+    /// The values a one-line table shows for it, comma-separated, each
+    /// "field[=Header][:decimals]": a field's name ("Ra") or the label of a
+    /// list element ("R9"), headed by its name unless a header is given,
+    /// with one decimal unless told; nullptr for none.
     const char* headline;
     /// Computed only when the context has a reference (TLMF).
     bool needsReference;

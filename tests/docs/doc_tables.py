@@ -113,7 +113,35 @@ def cri_json(tools, work):
             ("" if out.endswith("\n") else "\n") + "```\n")
 
 
-GENERATORS = {"lut-accuracy": lut_accuracy, "shot-rows": shot_rows, "cri-json": cri_json}
+BUILTIN_LIGHTS = ["A", "planck:3200", "D50", "daylight:5600", "D65", "C"] + \
+    [f"F{i}" for i in range(1, 13)]
+
+
+def quality_builtin(tools, work):
+    doc = json.loads(run([tools.bandlight, "quality", *BUILTIN_LIGHTS, "--json"], work))
+
+    def value(light, key, field, digits):
+        score = light.get(key)
+        v = score.get(field) if score else None
+        return "–" if v is None else f"{v:.{digits}f}"
+
+    lines = ["Made by `./build/bandlight quality " + " ".join(BUILTIN_LIGHTS) + " --json` "
+             "(every score with its default reference; SSI against its own blend):",
+             "",
+             "| light | CCT (K) | Duv | Ra | R9 | Rf | Rg | SSI | TLCI Qa |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for light in doc:
+        r9 = light["cri"]["R"][8] if light.get("cri") else None
+        lines.append(
+            f"| {light['light']} | {light['cct']:.0f} | {light['duv']:.4f} | "
+            f"{value(light, 'cri', 'Ra', 0)} | {'–' if r9 is None else f'{r9:.0f}'} | "
+            f"{value(light, 'cie2017', 'Rf', 0)} | {value(light, 'tm30', 'Rg', 0)} | "
+            f"{value(light, 'ssi', 'value', 0)} | {value(light, 'tlci', 'Qa', 0)} |")
+    return "\n".join(lines) + "\n"
+
+
+GENERATORS = {"lut-accuracy": lut_accuracy, "shot-rows": shot_rows, "cri-json": cri_json,
+              "quality-builtin": quality_builtin}
 
 
 def main():
