@@ -164,3 +164,13 @@ def test_quality_refuses_what_it_cannot_score():
         bandlight.quality("nolight")
     with pytest.raises(TypeError):
         bandlight.quality("F2", refrence="A")
+
+
+def test_quality_docs_example_runs():
+    # docs/quality.md's Python example, as printed.
+    import re
+    from conftest import SOURCE_DIR
+    text = (SOURCE_DIR / "docs" / "quality.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    assert len(blocks) == 1
+    exec(compile(blocks[0], "docs/quality.md", "exec"), {})
