@@ -5,8 +5,10 @@
 
 #include "spectral/CieData.h"
 #include "spectral/Colorimetry.h"
+#include "spectral/ColourFidelity.h"
 #include "spectral/ColourRendering.h"
 #include "spectral/Illuminants.h"
+#include "spectral/SpectralSimilarity.h"
 #include "transforms/BandModel.h"
 
 using namespace bandlight;
@@ -95,5 +97,29 @@ static void BM_ColourRenderingIndex(benchmark::State& state)
     }
 }
 BENCHMARK(BM_ColourRenderingIndex);
+
+/// CIE 224 / TM-30 figures of a light: `F2` as tabulated (5 nm, evaluated at
+/// 5 nm) and the same light at 1 nm (401 samples, as measured lights are).
+static void BM_ColourFidelity(benchmark::State& state)
+{
+    const Spectrum f2 = BuiltinIlluminant("F2");
+    const Spectrum light = state.range(0) == 5 ? f2 : f2.resampled(380.0, 1.0, 401);
+    for (auto _ : state)
+    {
+        benchmark::DoNotOptimize(ComputeColourFidelity(light));
+    }
+}
+BENCHMARK(BM_ColourFidelity)->Arg(5)->Arg(1);
+
+/// The Academy SSI of a 1 nm light against the default reference at its CCT.
+static void BM_SpectralSimilarity(benchmark::State& state)
+{
+    const Spectrum light = BuiltinIlluminant("F2").resampled(380.0, 1.0, 401);
+    for (auto _ : state)
+    {
+        benchmark::DoNotOptimize(ComputeSpectralSimilarity(light));
+    }
+}
+BENCHMARK(BM_SpectralSimilarity);
 
 BENCHMARK_MAIN();

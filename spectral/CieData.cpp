@@ -86,6 +86,13 @@ const MatchingFunctions& GetMatchingFunctions(Observer observer)
     return observer == Observer::CIE1931_2DEG ? cie1931 : cie1964;
 }
 
+const MatchingFunctions& GetMatchingFunctions1nm(Observer observer)
+{
+    static const MatchingFunctions cie1931 = LoadMatchingFunctions("cmf/cie1931_2deg_xyz_1nm.csv");
+    static const MatchingFunctions cie1964 = LoadMatchingFunctions("cmf/cie1964_10deg_xyz_1nm.csv");
+    return observer == Observer::CIE1931_2DEG ? cie1931 : cie1964;
+}
+
 const DaylightBasis& GetDaylightBasis()
 {
     static const DaylightBasis basis = []
@@ -100,6 +107,12 @@ const std::vector<NamedSpectrum>& TestColourSamples()
 {
     static const std::vector<NamedSpectrum> tcs = ReadEmbedded("ref/tcs.csv");
     return tcs;
+}
+
+const std::vector<NamedSpectrum>& ColourEvaluationSamples()
+{
+    static const std::vector<NamedSpectrum> ces = ReadEmbedded("ref/cie224_ces.csv");
+    return ces;
 }
 
 const std::vector<NamedSpectrum>& Rawtoaces190()

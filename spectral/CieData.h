@@ -47,6 +47,12 @@ struct MatchingFunctions
 
 const MatchingFunctions& GetMatchingFunctions(Observer observer);
 
+/// The same observer at 1 nm, 360–830 nm (CIE 15:2004 Tables T.4, T.5 at
+/// 1 nm; their 5 nm rows are GetMatchingFunctions'), for the computations a
+/// standard defines at 1 nm (CIE 224:2017): interpolating the 5 nm tables
+/// linearly moves CIE 224's Rf,i of a 1 nm light by up to 0.2.
+const MatchingFunctions& GetMatchingFunctions1nm(Observer observer);
+
 /// The CIE daylight basis S0, S1, S2 (CIE 15:2004 Table T.2), 300–830 nm at 5 nm.
 struct DaylightBasis
 {
@@ -60,6 +66,11 @@ const DaylightBasis& GetDaylightBasis();
 /// The CIE 13.3 test colour samples TCS01–TCS14 and TCS15, spectral
 /// radiance factors 360–830 nm at 5 nm, in order.
 const std::vector<NamedSpectrum>& TestColourSamples();
+
+/// The 99 colour evaluation samples CES01–CES99 of CIE 224:2017 and
+/// ANSI/IES TM-30-18, spectral reflectance factors 380–780 nm at 1 nm, in
+/// order (source in data/ref/cie224_ces.csv).
+const std::vector<NamedSpectrum>& ColourEvaluationSamples();
 
 /// The 190 measured training reflectances published with the Academy's
 /// rawtoaces (patch1 … patch190, 380–780 nm at 5 nm; source in
