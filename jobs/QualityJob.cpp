@@ -2,12 +2,67 @@
 #include "jobs/QualityJob.h"
 
 #include "report/Gnuplot.h"
+#include "report/LightQualityPlot.h"
 #include "requests/Inputs.h"
+#include "spectral/Colorimetry.h"
+#include "spectral/ColourFidelity.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 
 namespace bandlight::jobs
 {
+
+namespace
+{
+
+/// `s` scaled to the luminance (CIE 1931 Y) of `like`.
+Spectrum SameLuminance(Spectrum s, const Spectrum& like)
+{
+    const double y = IntegrateXyz(s, Observer::CIE1931_2DEG).y();
+    s *= y > 0.0 ? IntegrateXyz(like, Observer::CIE1931_2DEG).y() / y : 1.0;
+    return s;
+}
+
+/// The plot's row of each light: the light, CIE 224's reference at its
+/// CCT and the user's reference (each at the light's luminance), and
+/// TM-30's bins as its calculator computes them.
+std::vector<QualityPlotRow> QualityPlotRows(const std::vector<Light>& lights,
+                                            const Light& reference)
+{
+    std::vector<QualityPlotRow> rows;
+    for (const Light& l : lights)
+    {
+        QualityPlotRow row;
+        row.light = l.name;
+        row.spectrum = l.spectrum;
+        try
+        {
+            const ColourFidelity f = ComputeColourFidelity(l.spectrum, FidelityMethod::TM_30);
+            row.references.push_back({"CIE 224 / TM-30 reference",
+                                      SameLuminance(ColourFidelityReference(f.cctK), l.spectrum)});
+            row.note = f.referenceName;
+            row.vectors = true;
+            row.referenceAb = f.referenceBinAb;
+            row.testAb = f.testBinAb;
+            row.rf = f.rf;
+            row.rg = f.rg;
+        }
+        catch (const Exception&)
+        {
+            // No TM-30 value (a CCT outside its range): the table's warning
+            // says why; the row shows the spectrum alone.
+        }
+        if (!reference.name.empty())
+        {
+            row.references.push_back(
+                {reference.name + " (--reference)", SameLuminance(reference.spectrum, l.spectrum)});
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+}  // namespace
 
 QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
 {
@@ -20,6 +75,13 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
     if (!request.plot.empty())
     {
         CheckPlotPath(request.plot);
+        if (request.lights.size() > QUALITY_PLOT_MAX_LIGHTS)
+        {
+            throw ParameterError("--plot draws " + std::to_string(QUALITY_PLOT_MAX_LIGHTS) +
+                                 " lights at most (a row each), not " +
+                                 std::to_string(request.lights.size()) +
+                                 ": plot fewer, or use --json/--csv for the scores of many");
+        }
     }
     // Every light read before any is scored: a bad one costs no work.
     std::vector<Light> lights;
@@ -33,6 +95,11 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
         request.reference.empty() ? Light() : ResolveIlluminant(request.reference, reporter);
     QualityResult result;
     result.lights = ScoreLights(lights, reference, request.threads);
+    if (!request.plot.empty())
+    {
+        DrawQualityPlot(QualityPlotRows(lights, reference), request.plot);
+        result.plot = request.plot;
+    }
     return result;
 }
 

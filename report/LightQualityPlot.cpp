@@ -99,10 +99,10 @@ void DrawQualityPlot(const std::vector<QualityPlotRow>& rows, const std::string&
             data << r.spectrum.wavelength(i) << " " << r.spectrum[i] / lightPeak << "\n";
         }
         data << "\n\n";
-        plot << "set title " << GnuplotQuote(r.light + ": spectrum and references")
+        plot << "set title " << GnuplotQuote(r.note.empty() ? r.light : r.light + " (reference: " + r.note + ")")
              << "\nset size noratio\nunset arrow\nset xlabel 'wavelength (nm)'\n"
                 "set ylabel 'relative power'\nset xrange [380:780]\nset yrange [0:*]\n"
-                "set grid\nset key top right\nplot $bandlight_data index "
+                "set grid\nset offsets 0, 0, graph 0.4, 0\nset key top right opaque box\nplot $bandlight_data index "
              << index++ << " using 1:2 with lines lw 2 lc rgb '#202020' title "
              << GnuplotQuote(r.light);
         for (const auto& [name, s] : r.references)
@@ -125,7 +125,7 @@ void DrawQualityPlot(const std::vector<QualityPlotRow>& rows, const std::string&
                                              std::to_string(std::lround(r.rg)) + ")"
                                        : "TM-30: no value for this light")
              << "\nset size ratio -1\nset xrange [-1.6:1.6]\nset yrange [-1.6:1.6]\n"
-                "unset xlabel\nunset ylabel\nset key off\nunset grid\nunset arrow\n";
+                "unset xlabel\nunset ylabel\nset key off\nunset grid\nunset arrow\nset offsets 0, 0, 0, 0\n";
         // The reference: the unit circle.
         for (int k = 0; k <= 128; ++k)
         {

@@ -21,6 +21,9 @@ struct QualityPlotRow
     /// References drawn dashed beside it (CIE 224's blend, SSI's), each
     /// scaled to the light's luminance by the caller.
     std::vector<std::pair<std::string, Spectrum>> references;
+    /// A line under the light's name in its panel's title (what the
+    /// reference is), or empty.
+    std::string note;
     /// TM-30 per hue bin: the mean (a', b') of the samples under the
     /// reference and under the light (CAM02-UCS); no vectors when
     /// `vectors` is false (a light TM-30 gives no value for).

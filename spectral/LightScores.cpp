@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "spectral/Colorimetry.h"
+#include "spectral/ColourFidelity.h"
 #include "spectral/ColourRendering.h"
 #include "spectral/Exception.h"
+#include "spectral/SpectralSimilarity.h"
 #include "spectral/TelevisionLighting.h"
 
 namespace bandlight
@@ -67,22 +69,20 @@ Score CriScore(const Spectrum& light, const ScoreContext&)
     return s;
 }
 
-/// A TLCI or TLMF result as a score: Qa (TLCI) or the factor (TLMF), ΔEa,
-/// and ΔE00 per chart patch (null where Tech 3355 leaves a patch out).
-Score TelevisionScore(const char* key, const char* value, const TelevisionLightingScore& t)
+/// Labels "<name>1"… for a list of `n`.
+std::vector<std::string> Numbered(const std::string& name, size_t n)
 {
-    Score s{key, {Value(value, t.qa), Value("delta_Ea", t.deltaEa)}, t.referenceName, t.warnings};
     std::vector<std::string> labels;
-    for (size_t i = 0; i < t.deltaE.size(); ++i)
+    for (size_t i = 0; i < n; ++i)
     {
-        labels.push_back("delta_E" + std::to_string(i + 1));
+        labels.push_back(name + std::to_string(i + 1));
     }
-    s.fields.push_back(List("delta_E", t.deltaE, labels));
-    return s;
+    return labels;
 }
 
-/// A score that needs a white balance a light cannot give (a red line)
-/// has no value; the reason is its warning.
+/// A score that needs a value a light cannot give (a CCT outside a
+/// standard's range, a white balance on a red line) has no value; the
+/// reason is its warning.
 template <typename Compute>
 Score Guarded(const char* key, Compute&& compute)
 {
@@ -94,6 +94,70 @@ Score Guarded(const char* key, Compute&& compute)
     {
         return {key, {}, "", {std::string("no value: ") + e.what()}};
     }
+}
+
+Score Cie2017Score(const Spectrum& light, const ScoreContext&)
+{
+    return Guarded(
+        "cie2017",
+        [&]
+        {
+            // As the CIE 224:2017 calculator computes it (5 nm data
+            // at 5 nm).
+            const ColourFidelity f = ComputeColourFidelity(light, FidelityMethod::CIE_224);
+            return Score{"cie2017",
+                         {Value("Rf", f.rf), List("Rf_i", {f.rfSample.begin(), f.rfSample.end()},
+                                                  Numbered("Rf_", CES_COUNT))},
+                         f.referenceName,
+                         f.warnings};
+        });
+}
+
+Score Tm30Score(const Spectrum& light, const ScoreContext&)
+{
+    return Guarded("tm30",
+                   [&]
+                   {
+                       // As the ANSI/IES TM-30 calculator computes it (every
+                       // grid brought to 1 nm); the same Rf as CIE 224 for
+                       // data at 1 nm.
+                       const ColourFidelity f = ComputeColourFidelity(light, FidelityMethod::TM_30);
+                       return Score{"tm30",
+                                    {Value("Rf", f.rf), Value("Rg", f.rg),
+                                     List("Rf_h", {f.rfHue.begin(), f.rfHue.end()},
+                                          Numbered("Rf_h", HUE_BIN_COUNT)),
+                                     List("Rcs_h", {f.chromaShift.begin(), f.chromaShift.end()},
+                                          Numbered("Rcs_h", HUE_BIN_COUNT)),
+                                     List("Rhs_h", {f.hueShift.begin(), f.hueShift.end()},
+                                          Numbered("Rhs_h", HUE_BIN_COUNT))},
+                                    f.referenceName,
+                                    f.warnings};
+                   });
+}
+
+Score SsiScore(const Spectrum& light, const ScoreContext& context)
+{
+    return Guarded("ssi",
+                   [&]
+                   {
+                       const SpectralSimilarity s =
+                           context.reference ? ComputeSpectralSimilarity(light, *context.reference,
+                                                                         context.referenceName)
+                                             : ComputeSpectralSimilarity(light);
+                       return Score{"ssi",
+                                    {Value("value", s.ssi), Value("unrounded", s.unrounded)},
+                                    s.referenceName,
+                                    s.warnings};
+                   });
+}
+
+/// A TLCI or TLMF result as a score: Qa (TLCI) or the factor (TLMF), ΔEa,
+/// and ΔE00 per chart patch (null where Tech 3355 leaves a patch out).
+Score TelevisionScore(const char* key, const char* value, const TelevisionLightingScore& t)
+{
+    Score s{key, {Value(value, t.qa), Value("delta_Ea", t.deltaEa)}, t.referenceName, t.warnings};
+    s.fields.push_back(List("delta_E", t.deltaE, Numbered("delta_E", t.deltaE.size())));
+    return s;
 }
 
 Score TlciScore(const Spectrum& light, const ScoreContext&)
@@ -122,6 +186,23 @@ const std::vector<LightScoreEntry> kScores = {
      "Ra, the mean of R1-R8, and R1-R15: 100 - 4.6 ΔE in CIE 1964 U*V*W* of the test colour "
      "samples under the light against a Planckian (< 5000 K) or daylight reference at its CCT.",
      "Ra,R9", false, false, CriScore},
+    {"cie2017", "Rf", "Colour fidelity index", "CIE 224:2017",
+     "Rf = 10 ln(exp((100 - 6.73 ΔE')/10) + 1), ΔE' the mean CAM02-UCS difference of the 99 "
+     "colour evaluation samples (CIE 1964 10° observer) under the light and under a Planckian "
+     "(< 4000 K), daylight (> 5000 K) or blended reference at its CCT; as the CIE calculator "
+     "computes it.",
+     "Rf", false, false, Cie2017Score},
+    {"tm30", "TM-30", "IES method for evaluating light source colour rendition",
+     "ANSI/IES TM-30-20 (TM-30-18)",
+     "Rf as CIE 224 (as the IES calculator computes it: data brought to 1 nm), the gamut index "
+     "Rg (the area of the 16 hue bins' mean a'b' polygon against the reference's, x100), and "
+     "per hue bin the fidelity Rf,h, chroma shift Rcs,h (a fraction) and hue shift Rhs,h.",
+     "Rg", false, false, Tm30Score},
+    {"ssi", "SSI", "Spectral similarity index", "Academy S-2018-001 (SMPTE ST 2122)",
+     "How closely the spectrum follows a reference's over 375-675 nm in 10 nm bins, weighted "
+     "and smoothed, 100 for proportional spectra; camera-agnostic. The reference: Planckian "
+     "below 4000 K, CIE daylight from 4000 K, at the light's CCT, or --reference.",
+     "value=SSI:0", false, false, SsiScore},
     {"tlci", "TLCI", "Television lighting consistency index", "EBU Tech 3355 (TLCI-2012)",
      "Qa = 100 / (1 + (ΔEa / 3.16)^2.4): ΔE00 of the 18 coloured ColorChecker patches seen by "
      "the EBU standard camera (balanced on each light) and shown on a BT.709 display, under the "

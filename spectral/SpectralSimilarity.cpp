@@ -44,11 +44,32 @@ std::string Format(const char* format, double a)
     return text;
 }
 
+/// Data that stop short of 375 or 675 nm by at most kHeldNm (the CIE's
+/// tables start at 380 nm) are held at their end value there, as CIE
+/// 15:2004 §7.2.1 recommends for missing data; a longer gap counts as zero
+/// (and the result says so).
+constexpr double kHeldNm = 10.0;
+constexpr double kLastNm = 675.0;
+
+bool Held(const Spectrum& s)
+{
+    return s.start() - kFirstNm <= kHeldNm + 1e-9 && kLastNm - s.end() <= kHeldNm + 1e-9;
+}
+
+Spectrum Covered(const Spectrum& s)
+{
+    if ((s.start() <= kFirstNm + 1e-9 && s.end() >= kLastNm - 1e-9) || !Held(s))
+    {
+        return s;
+    }
+    return s.extended(std::min(s.start(), kFirstNm), std::max(s.end(), kLastNm));
+}
+
 /// §4.1–4.3: the 30 band integrals of a spectrum's 1 nm linear
 /// interpolant (trapezoids of 1 nm), normalised to sum 1.
 std::array<double, kBands> Bands(const Spectrum& s, const char* what)
 {
-    const Spectrum fine = s.resampled(kFirstNm, 1.0, kSamples);
+    const Spectrum fine = Covered(s).resampled(kFirstNm, 1.0, kSamples);
     std::array<double, kBands> band{};
     double total = 0.0;
     for (size_t b = 0; b < kBands; ++b)
@@ -118,11 +139,11 @@ SpectralSimilarity ComputeSpectralSimilarity(const Spectrum& test, const Spectru
     out.unrounded = 100.0 - 32.0 * std::sqrt(sum2);
     out.ssi = std::round(out.unrounded);
     out.referenceName = referenceName;
-    if (test.start() > kFirstNm + 1e-9 || test.end() < 675.0 - 1e-9)
+    if (!Held(test))
     {
         out.warnings.push_back(
-            Format("the test data start at %.0f nm", test.start()) +
-            Format(" and end at %.0f nm; the rest of 375–675 nm counts as zero", test.end()));
+            Format("the test data cover %.0f", test.start()) +
+            Format("–%.0f nm; the rest of 375–675 nm counts as zero", test.end()));
     }
     return out;
 }

@@ -2,6 +2,7 @@
 // `bandlight quality` as scripts use it and as users get it wrong: the
 // table, JSON and CSV agree; a mistake is one line on stderr and exit 2
 // before any work, a bad spectrum named by file and line.
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -34,6 +35,14 @@ TEST_CASE("quality: one table, JSON and CSV with a row per light", "[cli][qualit
     const auto table = Bandlight("quality F2 planck:3200 daylight:5600");
     REQUIRE(table.code == 0);
     CHECK_THAT(table.out, Contains("F2") && Contains("Ra") && Contains("CCT K"));
+    // The plot: written whole, a PNG of a row per light (2 here).
+    const std::string dir = Folder("quality_plot");
+    const auto plot = Bandlight("quality F2 F11 --reference D65 --plot '" + dir + "/q.png'");
+    REQUIRE(plot.code == 0);
+    std::ifstream png(dir + "/q.png", std::ios::binary);
+    char magic[8] = {};
+    png.read(magic, 8);
+    CHECK(std::string(magic + 1, 3) == "PNG");
 }
 
 TEST_CASE("quality: mistakes are one line and exit 2", "[cli][quality][mistakes]")
@@ -42,6 +51,10 @@ TEST_CASE("quality: mistakes are one line and exit 2", "[cli][quality][mistakes]
     CheckOneLine(Bandlight("quality"), "light is required");
     CheckOneLine(Bandlight("quality F2 --json --csv"), "excludes");
     CheckOneLine(Bandlight("quality F2 --plot '" + dir + "/scores.txt'"), ".png or .svg");
+    CheckOneLine(Bandlight("quality F1 F2 F3 F4 F5 F6 F7 F8 F9 F10 F11 F12 A --plot '" + dir +
+                           "/many.png'"),
+                 "--plot draws 12 lights at most");
+    CHECK_FALSE(std::filesystem::exists(dir + "/many.png"));
     CheckOneLine(Bandlight("quality F2 nolight"), "unknown illuminant 'nolight'");
     CheckOneLine(Bandlight("quality F2 --reference nolight"), "unknown illuminant 'nolight'");
     // A measured spectrum with a NaN: the file and line named, no table.
