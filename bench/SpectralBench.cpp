@@ -8,6 +8,7 @@
 #include "spectral/ColourFidelity.h"
 #include "spectral/ColourRendering.h"
 #include "spectral/Illuminants.h"
+#include "spectral/LightScores.h"
 #include "spectral/SpectralSimilarity.h"
 #include "transforms/BandModel.h"
 
@@ -121,5 +122,17 @@ static void BM_SpectralSimilarity(benchmark::State& state)
     }
 }
 BENCHMARK(BM_SpectralSimilarity);
+
+/// Every score of the registry (`quality`: CCT, CRI, CIE 224, TM-30, SSI,
+/// TLCI) of one light at 1 nm, as a spectrometer gives it.
+static void BM_ScoreLight(benchmark::State& state)
+{
+    const Spectrum light = BuiltinIlluminant("F2").resampled(380.0, 1.0, 401);
+    for (auto _ : state)
+    {
+        benchmark::DoNotOptimize(ScoreLight("F2", light));
+    }
+}
+BENCHMARK(BM_ScoreLight);
 
 BENCHMARK_MAIN();

@@ -126,14 +126,15 @@ def quality_builtin(tools, work):
         return "–" if v is None else f"{v:.{digits}f}"
 
     lines = ["Made by `./build/bandlight quality " + " ".join(BUILTIN_LIGHTS) + " --json` "
-             "(every score with its default reference; SSI against its own blend):",
+             "(every score against its own default reference; Rf as the CIE 224 calculator computes "
+             "it, Rg as the TM-30 calculator does):",
              "",
              "| light | CCT (K) | Duv | Ra | R9 | Rf | Rg | SSI | TLCI Qa |",
              "|---|---|---|---|---|---|---|---|---|"]
     for light in doc:
         r9 = light["cri"]["R"][8] if light.get("cri") else None
         lines.append(
-            f"| {light['light']} | {light['cct']:.0f} | {light['duv']:.4f} | "
+            f"| {light['light']} | {light['cct']:.0f} | {round(light['duv'], 4) + 0.0:.4f} | "
             f"{value(light, 'cri', 'Ra', 0)} | {'–' if r9 is None else f'{r9:.0f}'} | "
             f"{value(light, 'cie2017', 'Rf', 0)} | {value(light, 'tm30', 'Rg', 0)} | "
             f"{value(light, 'ssi', 'value', 0)} | {value(light, 'tlci', 'Qa', 0)} |")
