@@ -369,6 +369,12 @@ void AddQuality(py::module_& m)
             for (const py::handle& l : lights)
             {
                 resolved.push_back(ToLight(l));
+                // Named as given, as the command names its arguments.
+                if (py::isinstance<py::str>(l) || py::hasattr(l, "__fspath__"))
+                {
+                    resolved.back().name =
+                        py::str(py::module_::import("os").attr("fspath")(l)).cast<std::string>();
+                }
             }
             const Light ref = reference.is_none() ? Light() : ToLight(reference);
             std::string json;

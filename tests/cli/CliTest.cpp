@@ -85,7 +85,7 @@ TEST_CASE("cri --json has the documented shape", "[cli]")
     CHECK(j["illuminant"] == "F11");
     CHECK(j["cct_K"].get<double>() == Approx(4000).margin(15));
     CHECK(std::lround(j["Ra"].get<double>()) == 83);  // CIE 15:2004 Table T.8.2
-    CHECK(j["R"].size() == 14);
+    CHECK(j["R"].size() == 15);  // R1–R15
     CHECK(j.contains("duv"));
 }
 

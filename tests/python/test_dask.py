@@ -68,3 +68,11 @@ def test_a_frame_missing_on_a_worker_raises_as_it_would_here(client, tmp_path):
     assert str(remote.value) == str(local.value)
     assert remote.value.filename == local.value.filename == str(missing)
     assert remote.value.errno == local.value.errno
+
+
+def test_lights_scored_on_the_workers_as_here(client):
+    # quality() is a plain function of picklable arguments returning
+    # picklable records: client.map spreads lights over the workers.
+    lights = ["F1", "F2", "F7", "F11", "planck:3200", "daylight:5600"]
+    remote = client.gather(client.map(bandlight.quality, lights, reference="D65"))
+    assert remote == bandlight.quality(lights, reference="D65")
