@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/ResultTable.h"
+
 #include "measure/AccuracyRun.h"
 #include "measure/detail/AccuracySummary.h"
 
@@ -276,27 +278,18 @@ void WriteCost(std::ostream& out, const AccuracyResult& result)
     }
 }
 
-/// Accuracy rows as the JSON document's arrays; "camera" is the row's
-/// simulation kind (PlateSourceName).
-nlohmann::ordered_json RowsJson(const std::vector<AccuracyRow>& from)
+/// Accuracy rows as one table; "camera" is the row's simulation kind
+/// (PlateSourceName).
+ResultTable RowsTable(const std::vector<AccuracyRow>& from)
 {
-    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    ResultTable t({"method", "from", "to", "set", "plates", "camera", "exposure", "shipped", "mean",
+                   "p95", "max", "worst_sample"});
     for (const AccuracyRow& r : from)
     {
-        a.push_back({{"method", r.method},
-                     {"from", r.from},
-                     {"to", r.to},
-                     {"set", r.set},
-                     {"plates", r.plates},
-                     {"camera", PlateSourceName(r.source)},
-                     {"exposure", r.exposure},
-                     {"shipped", r.shipped},
-                     {"mean", r.mean},
-                     {"p95", r.p95},
-                     {"max", r.max},
-                     {"worst_sample", r.worstSample}});
+        t.add({r.method, r.from, r.to, r.set, r.plates, std::string(PlateSourceName(r.source)),
+               r.exposure, r.shipped, r.mean, r.p95, r.max, r.worstSample});
     }
-    return a;
+    return t;
 }
 
 }  // namespace
@@ -327,36 +320,30 @@ std::string AccuracyDocument(const AccuracyResult& result)
     {
         j["camera"] = nullptr;
     }
-    j["rows"] = RowsJson(result.rows);
-    j["cross_validation"] = RowsJson(result.crossValidation);
-    j["floor"] = RowsJson(result.floor);
-    j["cost"] = nlohmann::ordered_json::array();
+    j["rows"] = RowsTable(result.rows).json();
+    j["cross_validation"] = RowsTable(result.crossValidation).json();
+    j["floor"] = RowsTable(result.floor).json();
+    ResultTable cost({"method", "form", "ns_per_pixel", "mpixel_per_s", "threads"});
     for (const CostRow& c : result.cost)
     {
-        j["cost"].push_back({{"method", c.method},
-                             {"form", c.formName()},
-                             {"ns_per_pixel", c.nsPerPixel},
-                             {"mpixel_per_s", 1e3 / c.nsPerPixel},
-                             {"threads", c.threads}});
+        cost.add({c.method, c.formName(), c.nsPerPixel, 1e3 / c.nsPerPixel,
+                  static_cast<long long>(c.threads)});
     }
-    j["setup_cost"] = nlohmann::ordered_json::array();
+    j["cost"] = cost.json();
+    ResultTable setup({"what", "seconds"});
     for (const SetupCost& s : result.setupCost)
     {
-        j["setup_cost"].push_back({{"what", s.what}, {"seconds", s.seconds}});
+        setup.add({s.what, s.seconds});
     }
+    j["setup_cost"] = setup.json();
     if (!result.heatmaps.empty())
     {
-        j["heatmaps"] = nlohmann::ordered_json::array();
+        ResultTable maps({"image", "method", "mean", "p95", "max", "exr", "png"});
         for (const HeatmapSummary& h : result.heatmaps)
         {
-            j["heatmaps"].push_back({{"image", h.image},
-                                     {"method", h.method},
-                                     {"mean", h.mean},
-                                     {"p95", h.p95},
-                                     {"max", h.max},
-                                     {"exr", h.exr},
-                                     {"png", h.png}});
+            maps.add({h.image, h.method, h.mean, h.p95, h.max, h.exr, h.png});
         }
+        j["heatmaps"] = maps.json();
     }
     return j.dump(2);
 }

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/ResultTable.h"
+
 namespace bandlight
 {
 
@@ -43,19 +45,9 @@ std::vector<std::string> Warnings(const LightQuality& q)
 }
 
 /// The CSV columns of one light: (column, cell).
-std::vector<std::pair<std::string, std::string>> CsvCells(const LightQuality& q)
+std::vector<std::pair<std::string, ResultCell>> CsvCells(const LightQuality& q)
 {
-    std::vector<std::pair<std::string, std::string>> cells;
-    char buf[32];
-    const auto number = [&](double v)
-    {
-        if (!std::isfinite(v))
-        {
-            return std::string();
-        }
-        std::snprintf(buf, sizeof buf, "%.6g", v);
-        return std::string(buf);
-    };
+    std::vector<std::pair<std::string, ResultCell>> cells;
     for (const Score& s : q.scores)
     {
         const bool top = FindLightScore(s.key).topLevel;
@@ -68,30 +60,16 @@ std::vector<std::pair<std::string, std::string>> CsvCells(const LightQuality& q)
         {
             if (!f.list)
             {
-                cells.push_back({prefix + f.name, number(f.values.at(0))});
+                cells.push_back({prefix + f.name, f.values.at(0)});
                 continue;
             }
             for (size_t i = 0; i < f.values.size(); ++i)
             {
-                cells.push_back({prefix + ElementLabel(f, i), number(f.values[i])});
+                cells.push_back({prefix + ElementLabel(f, i), f.values[i]});
             }
         }
     }
     return cells;
-}
-
-std::string CsvQuote(const std::string& cell)
-{
-    if (cell.find_first_of(",\"\r\n") == std::string::npos)
-    {
-        return cell;
-    }
-    std::string q = "\"";
-    for (const char c : cell)
-    {
-        q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    }
-    return q + "\"";
 }
 
 /// The value a table shows for headline `ref` of a score: a field's value,
@@ -179,7 +157,7 @@ std::string QualityJson(const std::vector<LightQuality>& lights)
 
 std::string QualityCsv(const std::vector<LightQuality>& lights)
 {
-    std::vector<std::vector<std::pair<std::string, std::string>>> rows;
+    std::vector<std::vector<std::pair<std::string, ResultCell>>> rows;
     std::vector<std::string> columns;
     for (const LightQuality& q : lights)
     {
@@ -187,35 +165,34 @@ std::string QualityCsv(const std::vector<LightQuality>& lights)
         // Columns in first-seen order: a light without a score's values
         // leaves them to the next light that has them, after those before.
         auto at = columns.begin();
-        for (const auto& [column, cell] : rows.back())
+        for (const auto& cell : rows.back())
         {
-            const auto found = std::find(columns.begin(), columns.end(), column);
-            at = found != columns.end() ? found + 1 : columns.insert(at, column) + 1;
+            const auto found = std::find(columns.begin(), columns.end(), cell.first);
+            at = found != columns.end() ? found + 1 : columns.insert(at, cell.first) + 1;
         }
     }
-    std::string out = "light";
-    for (const std::string& c : columns)
-    {
-        out += "," + CsvQuote(c);
-    }
-    out += ",warnings\n";
+    std::vector<std::string> header = {"light"};
+    header.insert(header.end(), columns.begin(), columns.end());
+    header.push_back("warnings");
+    ResultTable table(header);
     for (size_t r = 0; r < lights.size(); ++r)
     {
-        out += CsvQuote(lights[r].light);
+        std::vector<ResultCell> row = {lights[r].light};
         for (const std::string& c : columns)
         {
             const auto cell = std::find_if(rows[r].begin(), rows[r].end(),
                                            [&](const auto& x) { return x.first == c; });
-            out += "," + (cell == rows[r].end() ? std::string() : CsvQuote(cell->second));
+            row.push_back(cell == rows[r].end() ? ResultCell() : cell->second);
         }
         std::string warnings;
         for (const std::string& w : Warnings(lights[r]))
         {
             warnings += (warnings.empty() ? "" : " | ") + w;
         }
-        out += "," + CsvQuote(warnings) + "\n";
+        row.push_back(warnings);
+        table.add(std::move(row));
     }
-    return out;
+    return table.csv();
 }
 
 std::string QualityText(const std::vector<LightQuality>& lights)
