@@ -18,6 +18,8 @@ namespace
 struct QualityOptions
 {
     jobs::QualityRequest request;
+    std::string reference;
+    std::string plot;
     bool json = false;
     bool csv = false;
 };
@@ -35,16 +37,27 @@ void AddQualityCommand(CLI::App& app)
                     "Lights: built-in names (D65, F11, 3200K), daylight:K, planck:K or "
                     "spectrum files (CSV, CGATS .sp/.ti3)")
         ->required();
-    cmd->add_option("--reference", o->request.reference,
-                    "A reference light for TLMF (and for SSI instead of its default)");
+    CLI::Option* reference =
+        cmd->add_option("--reference", o->reference,
+                        "A reference light for TLMF (and for SSI instead of its default)");
     CLI::Option* json = cmd->add_flag("--json", o->json, "Write JSON: a list, one object a light");
     cmd->add_flag("--csv", o->csv, "Write CSV: a row a light")->excludes(json);
-    cmd->add_option("--plot", o->request.plot,
-                    "Also draw FILE.png or FILE.svg: spectra against their references and "
-                    "the TM-30 colour vector graphic");
+    CLI::Option* plot =
+        cmd->add_option("--plot", o->plot,
+                        "Also draw FILE.png or FILE.svg: spectra against their references and "
+                        "the TM-30 colour vector graphic");
     cmd->callback(
-        [o]
+        [o, reference, plot]
         {
+            // Given, even empty, is not the same as not given.
+            if (reference->count() > 0)
+            {
+                o->request.reference = o->reference;
+            }
+            if (plot->count() > 0)
+            {
+                o->request.plot = o->plot;
+            }
             CommandReporter reporter;
             const jobs::QualityResult r = jobs::MakeQuality(o->request, reporter);
             std::cout << (o->json  ? QualityJson(r.lights) + "\n"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "jobs/QualityJob.h"
 
+#include <filesystem>
+
 #include "report/Gnuplot.h"
 #include "report/LightQualityPlot.h"
 #include "requests/Inputs.h"
@@ -72,15 +74,28 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
             "quality needs at least one light (a name such as D65 or 3200K, "
             "or a spectrum file)");
     }
-    if (!request.plot.empty())
+    if (request.reference && request.reference->empty())
     {
-        CheckPlotPath(request.plot);
+        throw ParameterError("--reference is empty: name a light (D65, 3200K) or a spectrum file");
+    }
+    if (request.plot)
+    {
+        CheckPlotPath(*request.plot);
         if (request.lights.size() > QUALITY_PLOT_MAX_LIGHTS)
         {
             throw ParameterError("--plot draws " + std::to_string(QUALITY_PLOT_MAX_LIGHTS) +
                                  " lights at most (a row each), not " +
                                  std::to_string(request.lights.size()) +
                                  ": plot fewer, or use --json/--csv for the scores of many");
+        }
+    }
+    for (const std::string& l : request.lights)
+    {
+        std::error_code ec;
+        if (request.plot && std::filesystem::equivalent(l, *request.plot, ec))
+        {
+            throw ParameterError("--plot " + *request.plot + " is the light " + l +
+                                 ": the plot would overwrite it; give another file");
         }
     }
     // Every light read before any is scored: a bad one costs no work.
@@ -92,13 +107,13 @@ QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter)
         lights.back().name = l;
     }
     const Light reference =
-        request.reference.empty() ? Light() : ResolveIlluminant(request.reference, reporter);
+        request.reference ? ResolveIlluminant(*request.reference, reporter) : Light();
     QualityResult result;
     result.lights = ScoreLights(lights, reference, request.threads);
-    if (!request.plot.empty())
+    if (request.plot)
     {
-        DrawQualityPlot(QualityPlotRows(lights, reference), request.plot);
-        result.plot = request.plot;
+        DrawQualityPlot(QualityPlotRows(lights, reference), *request.plot);
+        result.plot = *request.plot;
     }
     return result;
 }

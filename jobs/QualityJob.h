@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,12 @@ struct QualityRequest
     /// D5600), daylight:K, planck:K, or a spectrum file (CSV, CGATS .sp/.ti3).
     std::vector<std::string> lights;
     /// A reference light the same way: TLMF is computed against it, and
-    /// SSI uses it instead of its default reference. Empty: none.
-    std::string reference;
+    /// SSI uses it instead of its default reference. Not given: none (given
+    /// empty: refused).
+    std::optional<std::string> reference;
     /// FILE.png or FILE.svg: each light's spectrum against its references
-    /// and the TM-30 colour vector graphic; empty: no plot.
-    std::string plot;
+    /// and the TM-30 colour vector graphic. Not given: no plot.
+    std::optional<std::string> plot;
     int threads = 0;  ///< 0: all cores
 };
 
@@ -34,8 +36,8 @@ struct QualityResult
 };
 
 /// Scores every light of `request`. Every light and the plot path are
-/// checked before any score is computed: ParameterError for no light or a
-/// plot path that is not .png/.svg, Exception naming the light or file
+/// checked before any score is computed: ParameterError for no light, an
+/// empty reference, a plot path that is not .png/.svg, Exception naming the light or file
 /// that cannot be read or has no power in the visible range.
 QualityResult MakeQuality(const QualityRequest& request, Reporter& reporter = SilentReporter());
 

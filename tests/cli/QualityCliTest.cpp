@@ -51,11 +51,13 @@ TEST_CASE("quality: mistakes are one line and exit 2", "[cli][quality][mistakes]
     CheckOneLine(Bandlight("quality"), "light is required");
     CheckOneLine(Bandlight("quality F2 --json --csv"), "excludes");
     CheckOneLine(Bandlight("quality F2 --plot '" + dir + "/scores.txt'"), ".png or .svg");
-    CheckOneLine(Bandlight("quality F1 F2 F3 F4 F5 F6 F7 F8 F9 F10 F11 F12 A --plot '" + dir +
-                           "/many.png'"),
-                 "--plot draws 12 lights at most");
+    CheckOneLine(
+        Bandlight("quality F1 F2 F3 F4 F5 F6 F7 F8 F9 F10 F11 F12 A --plot '" + dir + "/many.png'"),
+        "--plot draws 12 lights at most");
     CHECK_FALSE(std::filesystem::exists(dir + "/many.png"));
     CheckOneLine(Bandlight("quality F2 nolight"), "unknown illuminant 'nolight'");
+    CheckOneLine(Bandlight("quality F2 --reference ''"), "--reference is empty");
+    CheckOneLine(Bandlight("quality F2 --plot ''"), ".png or .svg");
     CheckOneLine(Bandlight("quality F2 --reference nolight"), "unknown illuminant 'nolight'");
     // A measured spectrum with a NaN: the file and line named, no table.
     {
@@ -71,4 +73,12 @@ TEST_CASE("quality: mistakes are one line and exit 2", "[cli][quality][mistakes]
         f << "nm,ir\n800,1\n805,1\n810,1\n815,1\n820,1\n825,1\n";
     }
     CheckOneLine(Bandlight("quality '" + dir + "/ir.csv'"), "ir.csv");
+    // The plot over one of its own lights: refused, the light kept.
+    {
+        std::ofstream f(dir + "/lamp.svg");
+        f << "nm,lamp\n380,1\n480,1\n580,1\n680,1\n780,1\n";
+    }
+    CheckOneLine(Bandlight("quality '" + dir + "/lamp.svg' --plot '" + dir + "/lamp.svg'"),
+                 "would overwrite it");
+    CHECK(test::Slurp(dir + "/lamp.svg").rfind("nm,lamp", 0) == 0);
 }
