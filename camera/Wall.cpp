@@ -49,7 +49,8 @@ WallCamera::WallCamera(const SpectralCamera& camera, const Spectrum& whiteBalanc
     // CameraShot's gains: the perfect reflector under the white-balance
     // light records (1, 1, 1); it refuses a light a channel does not see.
     const CameraShot shot(camera, whiteBalance);
-    m_balanced = shot.gains().asDiagonal() * camera.sensitivities();
+    m_gains = shot.gains();
+    m_balanced = m_gains.asDiagonal() * camera.sensitivities();
 }
 
 Eigen::Matrix3Xd WallCamera::plates(const GridSpectrum& light, const GridSpectra& set) const
@@ -226,6 +227,7 @@ WallBalance SolveWallBalance(const WallSetup& s, size_t b)
     out.post = FitPostMatrix(setting, scenes[b], training, out.postFit);
     out.postRootPolynomial =
         FitPostRootPolynomial(setting, scenes[b], training, out.postRootPolynomialFit);
+    out.postRegistry = RegistryPostErrors(s, camera, scenes[b], wb, training);
 
     const Mat3 post = out.post;
     for (size_t k = 0; k < s.balances; ++k)

@@ -62,11 +62,15 @@ public:
                                   const GridSpectra& emitters) const;
     /// Balanced camera RGB of each emitter at drive 1 seen directly, 3 × N.
     Eigen::Matrix3Xd response(const GridSpectra& emitters) const { return m_balanced * emitters; }
+    /// Raw → balanced: the perfect reflector under the white-balance light
+    /// records (1, 1, 1).
+    const Vec3& gains() const noexcept { return m_gains; }
     const Mat3& idt() const noexcept { return m_idt; }
     const Mat3& rgbToXyz() const noexcept { return m_rgbToXyz; }
 
 private:
     Eigen::Matrix<double, 3, SurfaceRenderer::kSamples> m_balanced;
+    Vec3 m_gains;
     Mat3 m_idt;
     Mat3 m_rgbToXyz;
 };
@@ -141,6 +145,19 @@ Mat3 FitPostMatrix(const WallSetting& setting, const WallScene& scene, const Gri
 /// fits it; or the plain least-squares one when that is better).
 RootPolynomial FitPostRootPolynomial(const WallSetting& setting, const WallScene& scene,
                                      const GridSpectra& training, WallFitFigures& figures);
+
+struct WallSetup;
+
+/// The method registry's own change of light for the plate, beside the
+/// post-camera look: the op of rootpoly-camera (Relighter, the camera set,
+/// its one IDT the white balance's) from the wall showing `scene` — its
+/// spectrum as a light — to `light`, on the plates of `set` under the wall,
+/// carried from the white balance's gains to the wall's own as the op
+/// expects; ΔE00 against the plates under the light as WallErrors measures.
+/// The op is fitted to the observer's colours under the light, not to this
+/// camera's plate of them: its floor is the camera's IDT error there.
+Statistics RegistryPostErrors(const WallSetup& setup, const WallCamera& camera,
+                              const WallScene& scene, const Light& light, const GridSpectra& set);
 
 /// Everything `wall` needs beside a white balance, resolved.
 struct WallSetup

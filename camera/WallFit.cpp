@@ -6,10 +6,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include <memory>
+
+#include <Eigen/LU>
 #include <Eigen/QR>
 
 #include "camera/Wall.h"
 #include "spectral/Metrics.h"
+#include "transforms/IlluminantChange.h"
+#include "transforms/Plates.h"
 #include "transforms/RootPolynomial.h"
 
 namespace bandlight::jobs
@@ -325,6 +330,35 @@ RootPolynomial FitPostRootPolynomial(const WallSetting& s, const WallScene& scen
     const Eigen::VectorXd theta = FitModel(m, {RowsOf(rootpoly.matrix())}, figures);
     figures.before = WallErrors(s, scene.drive, scene, training);
     return RootPolynomial(kDegree, FromRows(theta, terms));
+}
+
+Statistics RegistryPostErrors(const WallSetup& setup, const WallCamera& camera,
+                              const WallScene& scene, const Light& light, const GridSpectra& set)
+{
+    const GridSpectrum wallSamples = setup.emitters * scene.drive;
+    const Light wall{
+        "the wall showing " + light.name,
+        Spectrum(SurfaceRenderer::kStartNm, SurfaceRenderer::kStepNm,
+                 std::vector<double>(wallSamples.data(), wallSamples.data() + wallSamples.size()))};
+    MethodSpec method = WithCamera(ParseMethod("rootpoly-camera"),
+                                   std::make_shared<const SpectralCamera>(setup.camera), light);
+    method.training = setup.training;
+    method.plates = Plates{PlateConvention::BALANCED, setup.adaptation};
+    const Relighter relight(wall, light, method, setup.working, setup.observer);
+    // The op expects the camera balanced for the light it is under (the
+    // wall), read through the one IDT (the white balance's); the plates are
+    // balanced for the white balance.
+    const Vec3 wallGains = CameraShot(setup.camera, wall.spectrum).gains();
+    const Mat3 toOp = camera.idt() * wallGains.cwiseQuotient(camera.gains()).asDiagonal() *
+                      camera.idt().inverse();
+    // The op works in relative units (its white of Y = 1); the plates are at
+    // the light's level: one scale, the white card's.
+    const Vec3 wallWhite = camera.plate(wallSamples);
+    const double level = (camera.rgbToXyz() * camera.plate(scene.real)).y() /
+                         (camera.rgbToXyz() * relight.apply(Vec3(toOp * wallWhite))).y();
+    const WallSetting setting{camera, setup.emitters, setup.observer};
+    return WallErrors(setting, scene.drive, scene, set,
+                      [&](const Vec3& p) { return Vec3(level * relight.apply(Vec3(toOp * p))); });
 }
 
 }  // namespace bandlight::jobs

@@ -163,6 +163,7 @@ std::string WallDocument(const WallResult& r)
         w["post_camera"]["root_polynomial"] = FitJson(b.postRootPolynomialFit);
         w["post_camera"]["root_polynomial"]["degree"] = b.postRootPolynomial.degree();
         w["post_camera"]["root_polynomial"]["matrix"] = MatrixJson(b.postRootPolynomial.matrix());
+        w["post_camera"]["registry_rootpoly_camera"] = StatsJson(b.postRegistry);
         w["out_of_frustum"] = Json::array();
         for (const WallShown& s : b.shown)
         {
@@ -234,7 +235,8 @@ std::string WallReport(const WallResult& r)
           << Fixed(b.postFit.before.mean, 2) << " -> " << Fixed(b.postFit.after.mean, 2)
           << " (plain least squares " << Fixed(b.postFit.leastSquares.mean, 2)
           << "); root polynomial " << Fixed(b.postRootPolynomialFit.after.mean, 2) << " (plain "
-          << Fixed(b.postRootPolynomialFit.leastSquares.mean, 2) << ")\n";
+          << Fixed(b.postRootPolynomialFit.leastSquares.mean, 2)
+          << "); the registry's rootpoly-camera " << Fixed(b.postRegistry.mean, 2) << "\n";
     }
     return o.str();
 }

@@ -133,6 +133,9 @@ struct WallBalance
     WallFitFigures postFit;
     RootPolynomial postRootPolynomial;  ///< its degree-2 root-polynomial form
     WallFitFigures postRootPolynomialFit;
+    /// The method registry's rootpoly-camera op for the same change of
+    /// light on the same plates (RegistryPostErrors), training set.
+    Statistics postRegistry;
     std::vector<WallShown> shown;  ///< one per white-balance light
 };
 
