@@ -84,7 +84,11 @@ Json Conventions(const WallResult& r)
         {"post_camera",
          "a 3x3 on the plate (working RGB), fitted for the wall showing the white-balance light "
          "as bandlight fits a 3x3 (white kept, CIELAB to first order; plain least squares when "
-         "that is better); its degree-2 root polynomial reported beside it"}};
+         "that is better); its degree-2 root polynomial reported beside it"},
+        {"registry",
+         "the method registry's rootpoly-camera op for the same change of light (the wall's "
+         "spectrum to the light, the camera set, its IDT the white balance's), fitted to the "
+         "observer's colours under the light, measured on the same plates for comparison"}};
 }
 
 std::string Stats(const Statistics& s)
