@@ -126,23 +126,26 @@ Statistics WallErrors(const WallSetting& setting, const Eigen::VectorXd& drive,
 /// The lighting pre-correction: P (N × N) on the drive, fitted over the
 /// scenes (the wall showing each depicted light) and the training
 /// remittances so that their plates under the wall at P · drive are those
-/// under the real light: linear least squares in P = I + Δ, the
-/// minimum-norm Δ (drives span three dimensions: P is the identity off
-/// them), each residual weighted by the CIELAB Jacobian at its target;
-/// the plain fit (unweighted) instead when its mean ΔE00 on the same data
-/// is lower. `figures` gets both.
+/// under the real light. The plates are linear in P = I + Δ: the plain
+/// least-squares Δ, then bandlight's fit (iteratively reweighted least
+/// squares on CIEDE2000 to first order, which minimises the mean ΔE00),
+/// each the minimum-norm Δ (drives span three dimensions: P is the
+/// identity off them); the one of the lower mean ΔE00 on the data is
+/// returned, so never worse than the plain fit there. `figures` gets both.
 Eigen::MatrixXd FitPreCorrection(const WallSetting& setting, const std::vector<WallScene>& scenes,
                                  const GridSpectra& training, WallFitFigures& figures);
 
 /// The post-camera look for `scene`: the 3×3 (working RGB) from the plates
-/// under the wall to those under the real light, as bandlight fits a 3×3
-/// (FitLabMatrix: white kept, CIELAB error to first order), or the plain
-/// least-squares 3×3 when its mean ΔE00 on the training set is lower.
+/// under the wall to those under the real light, fitted as the
+/// pre-correction is (plain least squares, then bandlight's CIEDE2000 fit,
+/// also started from FitLabMatrix, the 3×3 bandlight fits for a change of
+/// light: white kept, CIELAB to first order), the lower mean ΔE00 on the
+/// training set kept.
 Mat3 FitPostMatrix(const WallSetting& setting, const WallScene& scene, const GridSpectra& training,
                    WallFitFigures& figures);
 
-/// The same as a degree-2 root polynomial (FitRootPolynomial, as rootpoly
-/// fits it; or the plain least-squares one when that is better).
+/// The same as a degree-2 root polynomial (also started from
+/// FitRootPolynomial, as rootpoly fits it).
 RootPolynomial FitPostRootPolynomial(const WallSetting& setting, const WallScene& scene,
                                      const GridSpectra& training, WallFitFigures& figures);
 

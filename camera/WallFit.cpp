@@ -175,7 +175,7 @@ Eigen::VectorXd FitModel(const LinearModel& m, const std::vector<Eigen::VectorXd
             if (s.mean < figures.after.mean)
             {
                 figures.after = s;
-                figures.fit = "cielab";
+                figures.fit = "ciede2000";
                 best = theta;
             }
         }

@@ -78,13 +78,14 @@ Json Conventions(const WallResult& r)
          "CIEDE2000 between plates (camera white balance and IDT) of each remittance lit by the "
          "wall and by L, L*a*b* relative to the plate of a white card under L"},
         {"pre_correction",
-         "an N x N matrix on the drive, fitted over the depicted lights and the training set "
-         "by linear least squares (minimum norm, CIELAB-weighted to first order; plain when "
-         "that is better)"},
+         "an N x N matrix on the drive, fitted over the depicted lights and the training set by "
+         "linear least squares, minimum norm: bandlight's fit (iteratively reweighted on "
+         "CIEDE2000 to first order, minimising the mean) unless the plain fit has the lower mean "
+         "dE00 on the data"},
         {"post_camera",
-         "a 3x3 on the plate (working RGB), fitted for the wall showing the white-balance light "
-         "as bandlight fits a 3x3 (white kept, CIELAB to first order; plain least squares when "
-         "that is better); its degree-2 root polynomial reported beside it"},
+         "a 3x3 on the plate (working RGB), fitted for the wall showing the white-balance "
+         "light, as the pre-correction is (also started from bandlight's 3x3 for a change of "
+         "light); its degree-2 root polynomial reported beside it"},
         {"registry",
          "the method registry's rootpoly-camera op for the same change of light (the wall's "
          "spectrum to the light, the camera set, its IDT the white balance's), fitted to the "

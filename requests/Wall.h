@@ -89,9 +89,9 @@ struct WallInFrustum
 /// least-squares fit of the same form on the same data.
 struct WallFitFigures
 {
-    /// Which fit the correction is: "cielab" (bandlight's: each residual
-    /// weighted by the CIELAB Jacobian at its target) or "least-squares"
-    /// (when the plain fit has the lower mean ΔE00 on the data).
+    /// Which fit the correction is: "ciede2000" (bandlight's: iteratively
+    /// reweighted least squares on CIEDE2000 to first order) or
+    /// "least-squares" (when nothing beats the plain fit on the data).
     std::string fit;
     Statistics before;
     Statistics after;
