@@ -143,6 +143,28 @@ TEST_CASE("wall: an emitter file with a negative or NaN sample is refused at its
         Bandlight("wall --emitter 'R=" + negative + "' 'G=" + Emitter(dir, "green", 530, 30) +
                   "' 'B=" + Emitter(dir, "blue", 460, 20) + "'" + Rest(dir + "/out")),
         negative + ":53: emitter R has a negative sample (-0.25)");
+    // A CGATS file (ArgyllCMS .sp, 10 nm): the line of its spectrum's row.
+    const std::string cgats = dir + "/negative.sp";
+    {
+        std::ofstream o(cgats);
+        o << "SPECT\n\nKEYWORD \"SPECTRAL_BANDS\"\nSPECTRAL_BANDS \"41\"\n"
+             "KEYWORD \"SPECTRAL_START_NM\"\nSPECTRAL_START_NM \"380.0\"\n"
+             "KEYWORD \"SPECTRAL_END_NM\"\nSPECTRAL_END_NM \"780.0\"\n\n"
+             "NUMBER_OF_FIELDS 41\nBEGIN_DATA_FORMAT\n";
+        for (int l = 380; l <= 780; l += 10)
+        {
+            o << "SPEC_" << l << (l < 780 ? " " : "\n");
+        }
+        o << "END_DATA_FORMAT\n\nNUMBER_OF_SETS 1\nBEGIN_DATA\n";
+        for (int l = 380; l <= 780; l += 10)
+        {
+            o << (l == 630 ? -0.5 : 0.5) << (l < 780 ? " " : "\n");
+        }
+        o << "END_DATA\n";
+    }
+    CheckOneLine(Bandlight("wall --emitter 'R=" + cgats + "' 'G=" + Emitter(dir, "green", 530, 30) +
+                           "' 'B=" + Emitter(dir, "blue", 460, 20) + "'" + Rest(dir + "/out")),
+                 cgats + ":17: emitter R has a negative sample (-0.5)");
     const std::string nan = Emitter(dir, "nan", 530, 30, 530, "nan");
     CheckOneLine(Bandlight("wall --emitter 'R=" + Emitter(dir, "red", 630, 20) + "' 'G=" + nan +
                            "' 'B=" + Emitter(dir, "blue", 460, 20) + "'" + Rest(dir + "/out")),
