@@ -255,7 +255,8 @@ WallDescriptions DescribeWallBalance(const WallResult& r, const WallBalance& b)
          << r.trainingCount << ").";
     WallDescriptions d;
     d.idt = "Raw camera RGB to " + FindRgbSpace(r.workingSpace).displayName +
-            ": bandlight's IDT for " + b.light + ", gains folded in. " + from.str();
+            ": bandlight's IDT for " + b.light + ", gains folded in (rms dE*ab " +
+            Fixed(b.idt.rmsDe76, 2) + " on the training set). " + from.str();
     std::ostringstream in;
     in << "In frustum: " << FindRgbSpace(r.contentSpace).displayName << " content to the drive of "
        << Emitters(r) << " (" << b.inFrustum.solution << " solution, condition number "
