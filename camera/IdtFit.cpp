@@ -25,20 +25,6 @@ namespace
 /// than eight patches leave it barely determined (and no test of its fit).
 constexpr size_t kFewestChartPatches = 8;
 
-/// A light of an IDT: a colour temperature ("3200K": daylight from 4000 K,
-/// Planckian below), a built-in name or a spectrum file.
-Light ResolveIdtLight(const std::string& text, Reporter& reporter)
-{
-    double kelvin = 0.0;
-    if (!PathExists(text) && ParseCct(text, kelvin))
-    {
-        std::ostringstream name;
-        name << kelvin << "K";
-        return {name.str(), IdtLightForCct(kelvin)};
-    }
-    return ResolveIlluminant(text, reporter);
-}
-
 /// The chart's camera RGB: one row per patch, "[name,] R, G, B", an
 /// optional header row and '#' comments.
 std::vector<Vec3> ReadChartRgb(const std::string& path)
@@ -115,6 +101,23 @@ IdtError ErrorAgainst(const ColourFit& d, const Mat3& idt, const Mat3& reference
 }
 
 }  // namespace
+
+std::string KelvinName(double kelvin)
+{
+    std::ostringstream name;
+    name << kelvin << "K";
+    return name.str();
+}
+
+Light ResolveIdtLight(const std::string& text, Reporter& reporter)
+{
+    double kelvin = 0.0;
+    if (!PathExists(text) && ParseCct(text, kelvin))
+    {
+        return {KelvinName(kelvin), IdtLightForCct(kelvin)};
+    }
+    return ResolveIlluminant(text, reporter);
+}
 
 /// {training} (rawtoaces' 190 when empty), then {test_set}.
 RemittanceSets ResolveRemittances(const IdtRequest& r, Reporter& reporter)

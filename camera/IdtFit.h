@@ -13,6 +13,7 @@
 #include "farm/Reporter.h"
 #include "requests/Idt.h"
 #include "transforms/Idt.h"
+#include "transforms/Methods.h"
 
 namespace bandlight::jobs
 {
@@ -40,6 +41,14 @@ struct RemittanceSets
     std::vector<NamedSpectrum> test;
     std::string testName;
 };
+
+/// A light of an IDT or a camera's white balance: a colour temperature
+/// ("3200K": daylight from 4000 K, Planckian below, IdtLightForCct), a
+/// built-in name or a spectrum file.
+Light ResolveIdtLight(const std::string& text, Reporter& reporter);
+
+/// The name a colour temperature's light is known by: "3200K".
+std::string KelvinName(double kelvin);
 
 /// {training} (rawtoaces' 190 when empty), then {test_set}.
 RemittanceSets ResolveRemittances(const IdtRequest& request, Reporter& reporter);

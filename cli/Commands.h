@@ -21,5 +21,6 @@ void AddPlotCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddSpectralCommand(CLI::App& app);
 void AddMethodsCommand(CLI::App& app);
+void AddWallCommand(CLI::App& app);
 
 }  // namespace bandlight::cli

@@ -39,6 +39,7 @@ void AddCommands(CLI::App& app)
     bandlight::cli::AddCriCommand(app);
     bandlight::cli::AddQualityCommand(app);
     bandlight::cli::AddIdtCommand(app);
+    bandlight::cli::AddWallCommand(app);
     bandlight::cli::AddConfigCommand(app);
     bandlight::cli::AddLutCommand(app);
     bandlight::cli::AddApplyCommand(app);

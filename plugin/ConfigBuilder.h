@@ -109,9 +109,10 @@ ConfigPackage ExtendConfig(const OCIO::ConstConfigRcPtr& base, ConfigOptions opt
 std::string SerializeConfig(const OCIO::ConstConfigRcPtr& config);
 
 /// Writes the package as DIR/config.ocio plus its LUT files (creating the
-/// folders), as one set of outputs: all files are replaced together once
-/// all are written, or none is. With `outputs`, the files join that set
-/// and the caller commits it.
+/// folders their paths name; each written by OCIO's GroupTransform::write as
+/// CLF, or as OCIO's CTF when its path ends in .ctf), as one set of outputs:
+/// all files are replaced together once all are written, or none is. With
+/// `outputs`, the files join that set and the caller commits it.
 void WriteConfigPackage(const ConfigPackage& package, const std::string& dir,
                         OutputSet* outputs = nullptr);
 

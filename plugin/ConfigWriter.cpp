@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "plugin/detail/ConfigParts.h"
@@ -17,8 +18,6 @@ namespace bandlight
 
 namespace
 {
-
-using detail::kLutFolder;
 
 /// `text` as a YAML double-quoted scalar.
 std::string YamlQuoted(const std::string& text)
@@ -87,9 +86,17 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, Ou
         }
     };
     makeDir(dir);
-    if (!package.lutFiles.empty())
+    // Every folder a LUT file goes into (luts/, and below it a wall's
+    // luts/wall/<white balance>/).
+    std::set<std::string> folders;
+    for (const auto& lut : package.lutFiles)
     {
-        makeDir(dir + "/" + kLutFolder);
+        const std::string folder =
+            std::filesystem::path(dir + "/" + lut.first).parent_path().string();
+        if (folders.insert(folder).second)
+        {
+            makeDir(folder);
+        }
     }
     // The config and its LUTs are one set: a config is never left pointing
     // at LUTs of another run, nor LUTs replaced under an old config.
@@ -99,8 +106,11 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir, Ou
     for (const auto& lut : package.lutFiles)
     {
         const auto& transform = lut.second;
-        set.write(dir + "/" + lut.first, [&](std::ostream& os)
-                  { transform->write(raw, "Academy/ASC Common LUT Format", os); });
+        // CLF, or OCIO's CTF for what CLF cannot hold (a matrix with alpha).
+        const bool ctf = std::filesystem::path(lut.first).extension() == ".ctf";
+        const char* format = ctf ? "Color Transform Format" : "Academy/ASC Common LUT Format";
+        set.write(dir + "/" + lut.first,
+                  [&](std::ostream& os) { transform->write(raw, format, os); });
     }
     // OCIO 2.1 serialises in time quadratic in the colour spaces: the text
     // ExtendConfig checked is the one written.

@@ -34,6 +34,25 @@ inline constexpr double IDT_SWEEP_MIN_K = 2800.0;
 inline constexpr double IDT_SWEEP_MAX_K = 6500.0;
 inline constexpr double IDT_SWEEP_STEP_K = 100.0;
 
+/// `wall`: the OCIO context variable that selects the transforms of the
+/// camera's white balance, as FileTransform paths read it (wall/${WALL_WB}/...).
+inline constexpr const char* WALL_CONTEXT_VARIABLE = "WALL_WB";
+/// `wall`: emitters whose responses in the camera are this close to
+/// collinear (the condition number of the camera's 3×N response, each
+/// emitter's column scaled to unit length) are refused: a drive solved
+/// through them can move by 100 % for a 1 % error in the measured spectra
+/// or sensitivities. RGB and RGBW walls of distinct LEDs lie near 2–3; two
+/// greens 2 nm apart beside a red reach 185.
+inline constexpr double WALL_MAX_CONDITION = 100.0;
+/// `wall`: the lights the wall's content depicts when its lighting
+/// pre-correction is fitted, beside the white-balance lights: Planckian
+/// below 4000 K, CIE daylight from 4000 K (IdtLightForCct), 2800–10000 K.
+inline constexpr double WALL_DEPICTED_K[] = {2800.0, 3200.0, 4000.0, 4500.0, 5000.0,
+                                             5600.0, 6500.0, 8000.0, 10000.0};
+/// `wall`: the second set the out-of-frustum errors are measured on, fitted
+/// on by no correction.
+inline constexpr const char* WALL_TEST_SET = "TCS";
+
 /// The linear working space of images, configs and LUTs.
 inline constexpr const char* WORKING_SPACE = "acescg";
 /// The illuminant-change method of `apply`, `lut` and Python's relighters.

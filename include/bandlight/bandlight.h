@@ -19,5 +19,6 @@
 #include "jobs/PlotJob.h"
 #include "jobs/RenderJob.h"
 #include "jobs/SpectralJob.h"
+#include "jobs/WallJob.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Illuminants.h"

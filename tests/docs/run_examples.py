@@ -32,7 +32,9 @@ plate.1001.exr ... plate.1003.exr (64x32 float RGBA, uncompressed EXR written by
 this script), surfaces.csv (six of rawtoaces' 190 training remittances from
 data/ref/rawtoaces_190.csv), camera.csv (the CIE 1931 observer from data/cmf as
 a camera's R, G, B sensitivities), arri_d21.json (rawtoaces' ARRI D21
-sensitivities, tests/data/rawtoaces) and scenes/ (the bundled scenes).
+sensitivities, tests/data/rawtoaces), scenes/ (the bundled scenes) and
+docs/examples/ (the example inputs the docs name by that path: docs/wall.md's
+emitter spectra).
 
 The manifest (DIR/manifest.json) holds for each command, keyed by its text (a
 command that occurs again gets " #2", " #3"), its exit code, the sha256 of its
@@ -248,6 +250,7 @@ def make_inputs(root, folder):
     shutil.copyfile(root / "tests" / "data" / "rawtoaces" / "arri_d21_380_780_5.json",
                     folder / "arri_d21.json")
     shutil.copytree(root / "scenes", folder / "scenes")
+    shutil.copytree(root / "docs" / "examples", folder / "docs" / "examples")
 
 
 # ------------------------------------------------------------- normalisation

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The wall in the frustum (the drive that makes the camera record the
+// content as intended) and one white balance's work from end to end.
+#include "camera/Wall.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+
+#include "plugin/ConfigBuilder.h"
+#include "plugin/OcioTransforms.h"
+#include "spectral/CieData.h"
+#include "spectral/ColourRendering.h"
+#include "spectral/Exception.h"
+
+namespace bandlight::jobs
+{
+
+GridSpectrum EmissionOnGrid(const Spectrum& s)
+{
+    GridSpectrum g;
+    for (int i = 0; i < SurfaceRenderer::kSamples; ++i)
+    {
+        g(i) = s(SurfaceRenderer::Wavelength(i));
+    }
+    return g;
+}
+
+GridSpectra RemittancesOnGrid(const std::vector<NamedSpectrum>& set)
+{
+    GridSpectra g(SurfaceRenderer::kSamples, Eigen::Index(set.size()));
+    for (size_t i = 0; i < set.size(); ++i)
+    {
+        g.col(Eigen::Index(i)) = SurfaceRenderer::Sample(set[i].spectrum);
+    }
+    return g;
+}
+
+double GridLuminance(const GridSpectrum& light, Observer observer)
+{
+    return EmissionOnGrid(GetMatchingFunctions(observer).y).dot(light);
+}
+
+WallCamera::WallCamera(const SpectralCamera& camera, const Spectrum& whiteBalance, const Mat3& idt,
+                       const Mat3& rgbToXyz)
+    : m_idt(idt), m_rgbToXyz(rgbToXyz)
+{
+    // CameraShot's gains: the perfect reflector under the white-balance
+    // light records (1, 1, 1); it refuses a light a channel does not see.
+    const CameraShot shot(camera, whiteBalance);
+    m_gains = shot.gains();
+    m_balanced = m_gains.asDiagonal() * camera.sensitivities();
+}
+
+Eigen::Matrix3Xd WallCamera::plates(const GridSpectrum& light, const GridSpectra& set) const
+{
+    return m_idt * ((m_balanced.array().rowwise() * light.transpose().array()).matrix() * set);
+}
+
+Eigen::Matrix3Xd WallCamera::plateByDrive(const GridSpectrum& remittance,
+                                          const GridSpectra& emitters) const
+{
+    return m_idt *
+           ((m_balanced.array().rowwise() * remittance.transpose().array()).matrix() * emitters);
+}
+
+namespace
+{
+
+/// The content cube's corners but black, and its white: where a gamut's
+/// drives are most extreme (the drive is linear in the content).
+const std::vector<std::pair<const char*, Vec3>>& Corners()
+{
+    static const std::vector<std::pair<const char*, Vec3>> corners = {
+        {"red", {1, 0, 0}},     {"green", {0, 1, 0}},  {"blue", {0, 0, 1}}, {"cyan", {0, 1, 1}},
+        {"magenta", {1, 0, 1}}, {"yellow", {1, 1, 0}}, {"white", {1, 1, 1}}};
+    return corners;
+}
+
+bool HasNegative(const Eigen::VectorXd& drive)
+{
+    const double scale = drive.cwiseAbs().maxCoeff();
+    return (drive.array() < -1e-9 * scale).any();
+}
+
+/// The two emitters whose responses in the camera point most nearly the
+/// same way (unit columns' largest |cosine|), for the refusal's message.
+std::string MostCollinear(const Eigen::Matrix3Xd& unit, const std::vector<std::string>& names)
+{
+    double best = -1.0;
+    std::string pair;
+    for (Eigen::Index a = 0; a < unit.cols(); ++a)
+    {
+        for (Eigen::Index b = a + 1; b < unit.cols(); ++b)
+        {
+            const double c = std::abs(unit.col(a).dot(unit.col(b)));
+            if (c > best)
+            {
+                best = c;
+                pair = names[size_t(a)] + " and " + names[size_t(b)];
+            }
+        }
+    }
+    return pair;
+}
+
+}  // namespace
+
+WallInFrustum SolveInFrustum(const Eigen::Matrix3Xd& response, const Mat3& contentToRecord,
+                             const std::vector<std::string>& names, const std::string& cameraLabel,
+                             double maxCondition)
+{
+    WallInFrustum f;
+    const Eigen::Index n = response.cols();
+    Eigen::Matrix3Xd unit = response;
+    for (Eigen::Index k = 0; k < n; ++k)
+    {
+        const double norm = response.col(k).norm();
+        if (!(norm > 0.0) || !std::isfinite(norm))
+        {
+            throw Exception(cameraLabel + " does not see emitter " + names[size_t(k)] +
+                            ": its drive could show the camera nothing");
+        }
+        unit.col(k) /= norm;
+    }
+    // The collinearity of the emitters as the camera sees them, whatever
+    // their power: a drive solved through a condition number κ turns a
+    // relative error ε in the data into up to κ·ε in the drive.
+    const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(unit);
+    const Eigen::Vector3d sigma = svd.singularValues().head<3>();
+    f.condition = sigma(2) > 0.0 ? sigma(0) / sigma(2) : INFINITY;
+    if (!(f.condition <= maxCondition))
+    {
+        char figure[64];
+        std::snprintf(figure, sizeof figure, "%.4g", f.condition);
+        throw Exception(cameraLabel +
+                        ": the emitters are nearly collinear for this camera "
+                        "(condition number " +
+                        figure + ", above " + std::to_string(int(maxCondition)) +
+                        "; most alike: " + MostCollinear(unit, names) +
+                        "): no drive shows it colours reliably; leave one of them out");
+    }
+    // The exact equations response · D = contentToRecord have, for N > 3
+    // emitters, an (N − 3)-dimensional family of solutions: the Moore–Penrose
+    // one, Rᵀ(R·Rᵀ)⁻¹, is the smallest (least total drive power in the
+    // Euclidean sense). For N = 3 it is R⁻¹.
+    const Eigen::MatrixXd pinv = response.transpose() * (response * response.transpose()).inverse();
+    const Eigen::MatrixXd d0 = pinv * contentToRecord;
+    const double peak = (d0 * Vec3::Ones()).maxCoeff();
+    if (!(peak > 0.0))
+    {
+        throw Exception(cameraLabel +
+                        ": the content's white drives no emitter positively: "
+                        "this wall cannot show white to this camera");
+    }
+    f.solution = n == 3 ? "exact" : "minimum-norm";
+    f.exposure = 1.0 / peak;
+    f.drive = d0 * f.exposure;
+    for (const auto& [name, c] : Corners())
+    {
+        WallCorner corner{name, c, f.drive * c, false};
+        corner.negative = HasNegative(corner.drive);
+        f.negativeCorners += corner.negative ? 1 : 0;
+        const Vec3 want = f.exposure * (contentToRecord * c);
+        const Vec3 got = response * corner.drive;
+        f.residual = std::max(f.residual, (got - want).norm() / want.norm());
+        f.corners.push_back(std::move(corner));
+    }
+    return f;
+}
+
+Eigen::VectorXd DepictedDrive(const WallInFrustum& f, const WallCamera& camera,
+                              const Mat3& workingToContent, const GridSpectrum& light,
+                              const std::string& lightName)
+{
+    const Vec3 content = workingToContent * camera.plate(light);
+    const Eigen::VectorXd drive = f.drive * content;
+    const double peak = drive.maxCoeff();
+    if (!(peak > 0.0))
+    {
+        throw Exception("the wall cannot show " + lightName +
+                        " to this camera: no emitter is "
+                        "driven for its white");
+    }
+    return drive / peak;
+}
+
+WallScene WallSetting::scene(const Eigen::VectorXd& drive, const GridSpectrum& light) const
+{
+    const GridSpectrum wall = emitters * drive;
+    return {drive, light * (GridLuminance(wall, observer) / GridLuminance(light, observer))};
+}
+
+WallBalance SolveWallBalance(const WallSetup& s, size_t b)
+{
+    const Light& wb = s.depicted[b];
+    WallBalance out;
+    out.light = wb.name;
+    out.key = SafeName(wb.name);
+    const IdtProblem problem(s.camera, wb.spectrum, s.working, s.adaptation, s.observer);
+    const CctDuv cd = ComputeCct(problem.whiteXyz());
+    out.cct = cd.cctK;
+    out.duv = cd.duv;
+    out.idt = FitIdtOptimal(problem, s.training, s.camera.label());
+    const WallCamera camera(s.camera, wb.spectrum, out.idt.matrix, problem.rgbToXyz());
+
+    // In the frustum: the content, carried into the working space as the
+    // config carries it, is what the plate must be.
+    const Mat3 contentToWorking = SpaceToSpace(s.content, s.working);
+    out.inFrustum =
+        SolveInFrustum(camera.response(s.emitters), out.idt.matrix.inverse() * contentToWorking,
+                       s.names, s.camera.label());
+
+    // Out of the frustum: the wall showing each depicted light.
+    const WallSetting setting{camera, s.emitters, s.observer};
+    const Mat3 workingToContent = contentToWorking.inverse();
+    std::vector<WallScene> scenes;
+    for (const Light& l : s.depicted)
+    {
+        const GridSpectrum light = EmissionOnGrid(l.spectrum);
+        scenes.push_back(setting.scene(
+            DepictedDrive(out.inFrustum, camera, workingToContent, light, l.name), light));
+    }
+    const GridSpectra& training = s.sets.front().second;
+    out.preCorrection = FitPreCorrection(setting, scenes, training, out.preFit);
+    out.post = FitPostMatrix(setting, scenes[b], training, out.postFit);
+    out.postRootPolynomial =
+        FitPostRootPolynomial(setting, scenes[b], training, out.postRootPolynomialFit);
+    out.postRegistry = RegistryPostErrors(s, camera, scenes[b], wb, training);
+
+    const Mat3 post = out.post;
+    for (size_t k = 0; k < s.balances; ++k)
+    {
+        WallShown shown;
+        shown.light = s.depicted[k].name;
+        shown.drive = scenes[k].drive;
+        shown.preDrive = out.preCorrection * shown.drive;
+        shown.negative = HasNegative(shown.drive) || HasNegative(shown.preDrive);
+        for (const auto& [name, set] : s.sets)
+        {
+            WallSetErrors e;
+            e.set = name;
+            e.before = WallErrors(setting, shown.drive, scenes[k], set);
+            e.preCorrected = WallErrors(setting, shown.preDrive, scenes[k], set);
+            e.postCorrected = WallErrors(setting, shown.drive, scenes[k], set,
+                                         [&post](const Vec3& p) { return Vec3(post * p); });
+            shown.errors.push_back(e);
+        }
+        out.shown.push_back(std::move(shown));
+    }
+    return out;
+}
+
+}  // namespace bandlight::jobs

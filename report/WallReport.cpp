@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "report/WallReport.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "requests/Inputs.h"
+#include "spectral/RgbSpaces.h"
+
+namespace bandlight::jobs
+{
+
+namespace
+{
+
+using Json = nlohmann::ordered_json;
+
+Json MatrixJson(const Eigen::MatrixXd& m)
+{
+    Json a = Json::array();
+    for (Eigen::Index r = 0; r < m.rows(); ++r)
+    {
+        Json row = Json::array();
+        for (Eigen::Index c = 0; c < m.cols(); ++c)
+        {
+            row.push_back(m(r, c));
+        }
+        a.push_back(row);
+    }
+    return a;
+}
+
+Json VectorJson(const Eigen::VectorXd& v)
+{
+    Json a = Json::array();
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+    {
+        a.push_back(v(i));
+    }
+    return a;
+}
+
+Json StatsJson(const Statistics& s)
+{
+    return {
+        {"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}};
+}
+
+Json FitJson(const WallFitFigures& f)
+{
+    return {{"fit", f.fit},
+            {"before", StatsJson(f.before)},
+            {"after", StatsJson(f.after)},
+            {"least_squares", StatsJson(f.leastSquares)}};
+}
+
+/// The conventions every figure of the report follows (docs/wall.md).
+Json Conventions(const WallResult& r)
+{
+    const std::string working = FindRgbSpace(r.workingSpace).displayName;
+    return {
+        {"in_frustum",
+         "The camera, white-balanced for the light named (the perfect reflector under it "
+         "records 1,1,1) and read through bandlight's IDT for that light (to " +
+             working + "), records the wall driven for content c as the plate c carried into " +
+             working + ", times one exposure (content white drives the most driven emitter at 1)"},
+        {"solution",
+         "three emitters: the exact inverse; more: the minimum-norm (Moore-Penrose) exact "
+         "solution; the condition number is of the camera's response with each emitter's "
+         "column of unit length"},
+        {"depicted_light",
+         "the wall shows a light L with the content whose plate is that of a white card under "
+         "L for this white balance, through the in-frustum transform, its largest drive 1"},
+        {"reference", "the real light L at the wall's luminance (CIE Y)"},
+        {"error",
+         "CIEDE2000 between plates (camera white balance and IDT) of each remittance lit by the "
+         "wall and by L, L*a*b* relative to the plate of a white card under L"},
+        {"pre_correction",
+         "an N x N matrix on the drive, fitted over the depicted lights and the training set by "
+         "linear least squares, minimum norm: bandlight's fit (iteratively reweighted on "
+         "CIEDE2000 to first order, minimising the mean) unless the plain fit has the lower mean "
+         "dE00 on the data"},
+        {"post_camera",
+         "a 3x3 on the plate (working RGB), fitted for the wall showing the white-balance "
+         "light, as the pre-correction is (also started from bandlight's 3x3 for a change of "
+         "light); its degree-2 root polynomial reported beside it"},
+        {"registry",
+         "the method registry's rootpoly-camera op for the same change of light (the wall's "
+         "spectrum to the light, the camera set, its IDT the white balance's), fitted to the "
+         "observer's colours under the light, measured on the same plates for comparison"}};
+}
+
+std::string Stats(const Statistics& s)
+{
+    return Fixed(s.mean, 2) + " / " + Fixed(s.p95, 2) + " / " + Fixed(s.max, 2);
+}
+
+std::string Emitters(const WallResult& r)
+{
+    std::string names;
+    for (const WallEmitterSpec& e : r.emitters)
+    {
+        names += (names.empty() ? "" : ", ") + e.name;
+    }
+    return names;
+}
+
+}  // namespace
+
+std::string WallDocument(const WallResult& r)
+{
+    Json j;
+    j["camera"] = r.camera;
+    j["content_space"] = r.contentSpace;
+    j["working_space"] = r.workingSpace;
+    j["adaptation"] = r.adaptation;
+    j["emitters"] = Json::array();
+    for (const WallEmitterSpec& e : r.emitters)
+    {
+        j["emitters"].push_back({{"name", e.name}, {"file", e.file}});
+    }
+    j["training"] = {{"name", r.trainingName}, {"count", r.trainingCount}};
+    j["test_set"] = {{"name", r.testName}, {"count", r.testCount}};
+    Json values = Json::array();
+    for (const WallBalance& b : r.balances)
+    {
+        values.push_back(b.key);
+    }
+    j["context_variable"] = {{"name", r.contextVariable},
+                             {"values", values},
+                             {"default", r.balances.empty() ? "" : r.balances.front().key}};
+    j["config"] = {{"drives", r.drives.empty() ? Json() : Json(r.drives)}, {"note", r.configNote}};
+    j["conventions"] = Conventions(r);
+    j["depicted_lights"] = r.depicted;
+    j["white_balances"] = Json::array();
+    for (const WallBalance& b : r.balances)
+    {
+        Json w;
+        w["light"] = b.light;
+        w["key"] = b.key;
+        w["cct"] = b.cct;
+        w["duv"] = b.duv;
+        w["gains"] = {b.idt.gains.x(), b.idt.gains.y(), b.idt.gains.z()};
+        w["idt"] = MatrixJson(b.idt.matrix);
+        const WallInFrustum& f = b.inFrustum;
+        Json corners = Json::array();
+        for (const WallCorner& c : f.corners)
+        {
+            corners.push_back({{"name", c.name},
+                               {"content", {c.content.x(), c.content.y(), c.content.z()}},
+                               {"drive", VectorJson(c.drive)},
+                               {"negative", c.negative}});
+        }
+        w["in_frustum"] = {
+            {"solution", f.solution},
+            {"drive_matrix", MatrixJson(f.drive)},
+            {"exposure", f.exposure},
+            {"condition_number", f.condition},
+            {"residual", f.residual},
+            {"corners", corners},
+            {"negative_share", double(f.negativeCorners) / double(f.corners.size())}};
+        w["pre_correction"] = FitJson(b.preFit);
+        w["pre_correction"]["matrix"] = MatrixJson(b.preCorrection);
+        w["post_camera"] = FitJson(b.postFit);
+        w["post_camera"]["matrix"] = MatrixJson(b.post);
+        w["post_camera"]["root_polynomial"] = FitJson(b.postRootPolynomialFit);
+        w["post_camera"]["root_polynomial"]["degree"] = b.postRootPolynomial.degree();
+        w["post_camera"]["root_polynomial"]["matrix"] = MatrixJson(b.postRootPolynomial.matrix());
+        w["post_camera"]["registry_rootpoly_camera"] = StatsJson(b.postRegistry);
+        w["out_of_frustum"] = Json::array();
+        for (const WallShown& s : b.shown)
+        {
+            Json errors;
+            for (const WallSetErrors& e : s.errors)
+            {
+                errors[e.set] = {{"before", StatsJson(e.before)},
+                                 {"pre_corrected", StatsJson(e.preCorrected)},
+                                 {"post_corrected", StatsJson(e.postCorrected)}};
+            }
+            w["out_of_frustum"].push_back({{"shows", s.light},
+                                           {"drive", VectorJson(s.drive)},
+                                           {"pre_corrected_drive", VectorJson(s.preDrive)},
+                                           {"negative_drive", s.negative},
+                                           {"errors", errors}});
+        }
+        j["white_balances"].push_back(w);
+    }
+    return j.dump(2);
+}
+
+std::string WallReport(const WallResult& r)
+{
+    std::ostringstream o;
+    o << "wall: " << r.emitters.size() << " emitters (" << Emitters(r) << "), camera " << r.camera
+      << ", content " << FindRgbSpace(r.contentSpace).displayName << ", plates "
+      << FindRgbSpace(r.workingSpace).displayName << "\n";
+    for (const WallBalance& b : r.balances)
+    {
+        const WallInFrustum& f = b.inFrustum;
+        o << "\nwhite balance " << b.light << " (" << r.contextVariable << "=" << b.key << ", CCT "
+          << Fixed(b.cct, 0) << " K)\n";
+        o << "  in frustum: " << f.solution << " drive, condition number " << Fixed(f.condition, 2)
+          << ", residual " << f.residual << ", exposure " << f.exposure << "\n";
+        o << "    " << f.negativeCorners << " of " << f.corners.size()
+          << " content corners need a negative drive";
+        std::string negative;
+        for (const WallCorner& c : f.corners)
+        {
+            negative += c.negative ? (negative.empty() ? ": " : ", ") + c.name : "";
+        }
+        o << negative << "\n";
+        for (Eigen::Index e = 0; e < f.drive.rows(); ++e)
+        {
+            o << "    " << r.emitters[size_t(e)].name << " = " << Fixed(f.drive(e, 0), 6) << " R";
+            for (Eigen::Index c = 1; c < 3; ++c)
+            {
+                o << (f.drive(e, c) < 0.0 ? " - " : " + ") << Fixed(std::abs(f.drive(e, c)), 6)
+                  << (c == 1 ? " G" : " B");
+            }
+            o << "\n";
+        }
+        o << "  out of frustum, dE00 mean / p95 / max:\n";
+        for (const WallShown& s : b.shown)
+        {
+            for (const WallSetErrors& e : s.errors)
+            {
+                o << "    shows " << s.light << ", " << e.set << ": before " << Stats(e.before)
+                  << "; pre-corrected " << Stats(e.preCorrected) << "; post-camera "
+                  << Stats(e.postCorrected) << (s.negative ? " (needs a negative drive)" : "")
+                  << "\n";
+            }
+        }
+        o << "  pre-correction (" << b.preFit.fit << ", over " << r.depicted.size() << " lights x "
+          << r.trainingName << "): mean " << Fixed(b.preFit.before.mean, 2) << " -> "
+          << Fixed(b.preFit.after.mean, 2) << " (plain least squares "
+          << Fixed(b.preFit.leastSquares.mean, 2) << ")\n";
+        o << "  post-camera 3x3 (" << b.postFit.fit << ", " << r.trainingName << "): mean "
+          << Fixed(b.postFit.before.mean, 2) << " -> " << Fixed(b.postFit.after.mean, 2)
+          << " (plain least squares " << Fixed(b.postFit.leastSquares.mean, 2)
+          << "); root polynomial " << Fixed(b.postRootPolynomialFit.after.mean, 2) << " (plain "
+          << Fixed(b.postRootPolynomialFit.leastSquares.mean, 2)
+          << "); the registry's rootpoly-camera " << Fixed(b.postRegistry.mean, 2) << "\n";
+    }
+    return o.str();
+}
+
+WallDescriptions DescribeWallBalance(const WallResult& r, const WallBalance& b)
+{
+    std::ostringstream from;
+    from << "Emitters " << Emitters(r) << "; camera " << r.camera << " white-balanced for "
+         << b.light << " (CCT " << Fixed(b.cct, 0) << " K), read through bandlight's IDT for it to "
+         << FindRgbSpace(r.workingSpace).displayName << "; training set " << r.trainingName << " ("
+         << r.trainingCount << ").";
+    WallDescriptions d;
+    d.idt = "Raw camera RGB to " + FindRgbSpace(r.workingSpace).displayName +
+            ": bandlight's IDT for " + b.light + ", gains folded in (rms dE*ab " +
+            Fixed(b.idt.rmsDe76, 2) + " on the training set). " + from.str();
+    std::ostringstream in;
+    in << "In frustum: " << FindRgbSpace(r.contentSpace).displayName << " content to the drive of "
+       << Emitters(r) << " (" << b.inFrustum.solution << " solution, condition number "
+       << Fixed(b.inFrustum.condition, 2) << ", residual " << b.inFrustum.residual << "). "
+       << from.str();
+    d.inFrustum = in.str();
+    std::ostringstream pre;
+    pre << "Out of frustum: the lighting content's drive pre-corrected (" << r.emitters.size()
+        << "x" << r.emitters.size() << ", fitted over " << r.depicted.size()
+        << " depicted lights): dE00 mean " << Fixed(b.preFit.before.mean, 2) << " before, "
+        << Fixed(b.preFit.after.mean, 2) << " after. " << from.str();
+    d.preCorrection = pre.str();
+    std::ostringstream post;
+    post << "Post-camera: the plate of a scene lit by the wall showing " << b.light
+         << " made to look as under " << b.light << ": dE00 mean "
+         << Fixed(b.postFit.before.mean, 2) << " before, " << Fixed(b.postFit.after.mean, 2)
+         << " after. " << from.str();
+    d.postCamera = post.str();
+    return d;
+}
+
+std::string DescribeWallConfig(const WallResult& r)
+{
+    return "bandlight wall: an LED wall of " + std::to_string(r.emitters.size()) + " emitters (" +
+           Emitters(r) + ") for camera " + r.camera + ", content " +
+           FindRgbSpace(r.contentSpace).displayName + ". The context variable " +
+           r.contextVariable +
+           " selects the transforms of the camera's white balance. Generated by `bandlight wall`.";
+}
+
+}  // namespace bandlight::jobs
