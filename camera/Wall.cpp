@@ -237,6 +237,9 @@ WallBalance SolveWallBalance(const WallSetup& s, size_t b)
         shown.drive = scenes[k].drive;
         shown.preDrive = out.preCorrection * shown.drive;
         shown.negative = HasNegative(shown.drive) || HasNegative(shown.preDrive);
+        shown.scores = ScoreWallLight(s, shown.drive, "wall showing " + shown.light);
+        shown.preScores =
+            ScoreWallLight(s, shown.preDrive, "wall showing " + shown.light + ", pre-corrected");
         for (const auto& [name, set] : s.sets)
         {
             WallSetErrors e;
@@ -249,7 +252,33 @@ WallBalance SolveWallBalance(const WallSetup& s, size_t b)
         }
         out.shown.push_back(std::move(shown));
     }
+    out.whiteScores =
+        ScoreWallLight(s, out.inFrustum.drive * Vec3::Ones(), "wall white (content 1, 1, 1)");
     return out;
+}
+
+std::optional<LightQuality> ScoreWallLight(const WallSetup& setup, const Eigen::VectorXd& drive,
+                                           const std::string& name)
+{
+    if (HasNegative(drive) || setup.emitterSpectra.size() != size_t(drive.size()))
+    {
+        return std::nullopt;
+    }
+    Spectrum light = Spectrum::Constant(360.0, 1.0, 471, 0.0);
+    for (size_t k = 0; k < setup.emitterSpectra.size(); ++k)
+    {
+        Spectrum e = setup.emitterSpectra[k];
+        e *= drive[Eigen::Index(k)];
+        light += e;
+    }
+    try
+    {
+        return ScoreLight(name, light);
+    }
+    catch (const Exception&)
+    {
+        return std::nullopt;  // no power where the eye sees
+    }
 }
 
 }  // namespace bandlight::jobs

@@ -10,6 +10,7 @@
 // conventions.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -176,6 +177,9 @@ struct WallSetup
     std::vector<std::pair<std::string, GridSpectra>> sets;  ///< training, then the test set
     std::vector<Light> depicted;                            ///< the white balances first
     size_t balances = 0;  ///< how many of `depicted` are white balances
+    /// The emitters' spectra as their files give them (any grid): the
+    /// wall's light, scored as `quality` scores a light.
+    std::vector<Spectrum> emitterSpectra;
 };
 
 /// One white balance: its IDT, the in-frustum transform, the wall showing
@@ -183,5 +187,12 @@ struct WallSetup
 /// post-camera look fitted for the wall showing the white-balance light,
 /// and the errors of the wall showing each white-balance light.
 WallBalance SolveWallBalance(const WallSetup& setup, size_t balance);
+
+/// The light the wall emits at `drive` (Σ drive_k × emitter_k, on 1 nm over
+/// 360–830 nm), scored by every entry of the light-score registry, named
+/// `name`; nullopt when a drive is negative (no light to score: the
+/// report says so) or no score can be given.
+std::optional<LightQuality> ScoreWallLight(const WallSetup& setup, const Eigen::VectorXd& drive,
+                                           const std::string& name);
 
 }  // namespace bandlight::jobs

@@ -167,12 +167,14 @@ WallResult MakeWall(const WallRequest& r, Reporter& reporter)
                     {{result.trainingName, RemittancesOnGrid(training)},
                      {result.testName, RemittancesOnGrid(test)}},
                     depicted,
-                    r.whiteBalances.size()};
+                    r.whiteBalances.size(),
+                    {}};
     setup.emitters.resize(SurfaceRenderer::kSamples, Eigen::Index(emitters.size()));
     for (size_t k = 0; k < emitters.size(); ++k)
     {
         setup.names.push_back(emitters[k].name);
         setup.emitters.col(Eigen::Index(k)) = EmissionOnGrid(emitters[k].spectrum);
+        setup.emitterSpectra.push_back(emitters[k].spectrum);
     }
     for (size_t b = 0; b < setup.balances; ++b)
     {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "report/WallReport.h"
 
+#include "report/LightQualityReport.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -107,6 +109,42 @@ std::string Emitters(const WallResult& r)
     return names;
 }
 
+/// A light's scores as `quality --json` writes one light; null for none (a
+/// negative drive: no light to score).
+Json ScoresJson(const std::optional<LightQuality>& q)
+{
+    return q ? Json::parse(QualityJson({*q}))[0] : Json();
+}
+
+/// A light's headline scores in one line (Ra, R9, Rf, Rg, SSI, TLCI), or why
+/// there are none.
+std::string Headlines(const std::optional<LightQuality>& q)
+{
+    if (!q)
+    {
+        return "not scored (a negative drive: no light)";
+    }
+    std::string line;
+    const auto add = [&](const char* key, const char* field, const char* label, int element)
+    {
+        const Score* s = q->score(key);
+        const ScoreField* f = s ? s->field(field) : nullptr;
+        if (!f || f->values.size() <= size_t(std::max(element, 0)))
+        {
+            return;
+        }
+        line += (line.empty() ? "" : ", ") + std::string(label) + " " +
+                Fixed(f->values[size_t(std::max(element, 0))], 0);
+    };
+    add("cri", "Ra", "Ra", -1);
+    add("cri", "R", "R9", 8);
+    add("cie2017", "Rf", "Rf", -1);
+    add("tm30", "Rg", "Rg", -1);
+    add("ssi", "value", "SSI", -1);
+    add("tlci", "Qa", "TLCI", -1);
+    return line.empty() ? "no score has a value" : line;
+}
+
 }  // namespace
 
 std::string WallDocument(const WallResult& r)
@@ -161,6 +199,7 @@ std::string WallDocument(const WallResult& r)
             {"residual", f.residual},
             {"corners", corners},
             {"negative_share", double(f.negativeCorners) / double(f.corners.size())}};
+        w["white_scores"] = ScoresJson(b.whiteScores);
         w["pre_correction"] = FitJson(b.preFit);
         w["pre_correction"]["matrix"] = MatrixJson(b.preCorrection);
         w["post_camera"] = FitJson(b.postFit);
@@ -183,7 +222,9 @@ std::string WallDocument(const WallResult& r)
                                            {"drive", VectorJson(s.drive)},
                                            {"pre_corrected_drive", VectorJson(s.preDrive)},
                                            {"negative_drive", s.negative},
-                                           {"errors", errors}});
+                                           {"errors", errors},
+                                           {"scores", ScoresJson(s.scores)},
+                                           {"pre_corrected_scores", ScoresJson(s.preScores)}});
         }
         j["white_balances"].push_back(w);
     }
@@ -221,6 +262,7 @@ std::string WallReport(const WallResult& r)
             }
             o << "\n";
         }
+        o << "  wall white: " << Headlines(b.whiteScores) << "\n";
         o << "  out of frustum, dE00 mean / p95 / max:\n";
         for (const WallShown& s : b.shown)
         {
@@ -231,6 +273,8 @@ std::string WallReport(const WallResult& r)
                   << Stats(e.postCorrected) << (s.negative ? " (needs a negative drive)" : "")
                   << "\n";
             }
+            o << "    the wall showing " << s.light << " as a light: " << Headlines(s.scores)
+              << "; pre-corrected: " << Headlines(s.preScores) << "\n";
         }
         o << "  pre-correction (" << b.preFit.fit << ", over " << r.depicted.size() << " lights x "
           << r.trainingName << "): mean " << Fixed(b.preFit.before.mean, 2) << " -> "

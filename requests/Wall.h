@@ -3,6 +3,7 @@
 // `wall`'s request and result, the one step that checks a request before
 // any work, and the wall's emitters read and checked.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "farm/Reporter.h"
 #include "requests/Defaults.h"
+#include "spectral/LightScores.h"
 #include "spectral/Statistics.h"
 #include "transforms/Idt.h"
 
@@ -116,6 +118,10 @@ struct WallShown
     Eigen::VectorXd preDrive;  ///< through the pre-correction as well
     bool negative = false;     ///< either drive has a negative channel
     std::vector<WallSetErrors> errors;
+    /// The light-quality scores (spectral/LightScores.h) of the wall's
+    /// light at `drive` and at `preDrive`; none where a drive is negative.
+    std::optional<LightQuality> scores;
+    std::optional<LightQuality> preScores;
 };
 
 /// Everything of one camera white balance.
@@ -127,6 +133,9 @@ struct WallBalance
     double duv = 0.0;
     IdtFit idt;  ///< bandlight's IDT for the light (balanced camera RGB → working)
     WallInFrustum inFrustum;
+    /// The scores of the wall's own white: its light driven for content
+    /// white (1, 1, 1) through the in-frustum transform.
+    std::optional<LightQuality> whiteScores;
     Eigen::MatrixXd preCorrection;  ///< N × N on the drive
     WallFitFigures preFit;
     Mat3 post = Mat3::Identity();  ///< the post-camera look (working RGB)

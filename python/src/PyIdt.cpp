@@ -5,8 +5,9 @@
 #include <optional>
 
 #include "PyBandlight.h"
-#include "requests/Defaults.h"
 #include "jobs/IdtJob.h"
+#include "jobs/WallJob.h"
+#include "requests/Defaults.h"
 
 namespace bandlight::python
 {
@@ -44,11 +45,10 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
                const py::object& observer, const std::optional<Path>& training,
                const py::object& testSet, const py::object& interpolate,
                const py::object& asShotNeutral, const py::object& asShotLight,
-               const std::optional<Path>& chartRgb,
-               const py::object& chart, const py::object& light, int rootpoly,
-               const std::optional<Path>& json, const std::optional<Path>& config,
-               const std::optional<Path>& base, const std::optional<Path>& out,
-               const std::optional<std::string>& baseSpace)
+               const std::optional<Path>& chartRgb, const py::object& chart,
+               const py::object& light, int rootpoly, const std::optional<Path>& json,
+               const std::optional<Path>& config, const std::optional<Path>& base,
+               const std::optional<Path>& out, const std::optional<std::string>& baseSpace)
 {
     using namespace pybind11::literals;
     jobs::IdtRequest r;
@@ -128,19 +128,71 @@ py::object Idt(const std::optional<Path>& camera, const py::object& lights,
     return std::move(doc);
 }
 
+/// `wall`: the emitters as a mapping {name: file} (in drive-channel
+/// order) or "NAME=FILE" strings, the job's report.json as a dict.
+py::object Wall(const py::object& emitters, const Path& camera, const py::object& whiteBalances,
+                const std::string& contentSpace, const Path& out,
+                const std::optional<Path>& training, const py::object& testSet)
+{
+    jobs::WallRequest r;
+    if (py::isinstance<py::dict>(emitters))
+    {
+        for (const auto& [name, file] : emitters.cast<py::dict>())
+        {
+            r.emitters.push_back({py::str(name).cast<std::string>(), PathText(file, "emitters")});
+        }
+    }
+    else
+    {
+        for (const std::string& e : ToNames(emitters, "emitters"))
+        {
+            r.emitters.push_back(jobs::ParseEmitter(e));
+        }
+    }
+    r.camera = camera.string();
+    r.whiteBalances = ToNames(whiteBalances, "white_balances");
+    r.contentSpace = contentSpace;
+    r.out = out.string();
+    r.training = OptionalPath(training);
+    if (!testSet.is_none())
+    {
+        r.testSet = PathText(testSet, "test_set");
+    }
+    jobs::WallResult result;
+    {
+        py::gil_scoped_release release;
+        result = jobs::MakeWall(r, Warnings());
+    }
+    return py::module_::import("json").attr("loads")(jobs::WallDocument(result));
+}
+
 }  // namespace
 
 void AddIdt(py::module_& m)
 {
+    m.def("wall", &Wall, py::arg("emitters"), py::arg("camera"), py::arg("white_balances"),
+          py::kw_only(), py::arg("content_space"), py::arg("out"), py::arg("training") = py::none(),
+          py::arg("test_set") = py::none(), R"doc(
+An LED wall or fixture as a light: the job of ``bandlight wall``, returning
+its report.json as a dict (docs/wall.md). emitters: {name: file} in
+drive-channel order, or "NAME=FILE" strings; camera: a sensitivities file;
+white_balances: the camera's white balances ("5600K", names or files, a
+sequence or a comma-separated str); content_space: the content's RGB space;
+out: the folder config.ocio, its transform files and report.json are written
+into. Per white balance the report holds the in-frustum drive, the errors
+out of the frustum before and after the lighting pre-correction and the
+post-camera look, and the wall's light scored as bandlight.quality scores a
+light. The GIL is released while it runs.
+)doc");
     m.def("idt", &Idt, py::arg("camera") = py::none(), py::arg("lights") = py::none(),
           py::kw_only(), py::arg("working_space") = defaults::IDT_WORKING_SPACE,
           py::arg("adaptation") = defaults::ADAPTATION, py::arg("observer") = defaults::OBSERVER,
           py::arg("training") = py::none(), py::arg("test_set") = defaults::IDT_TEST_SET,
           py::arg("interpolate") = py::none(), py::arg("as_shot_neutral") = py::none(),
-          py::arg("as_shot_light") = py::none(), py::arg("chart_rgb") = py::none(), py::arg("chart") = py::none(),
-          py::arg("light") = py::none(), py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY,
-          py::arg("json") = py::none(), py::arg("config") = py::none(),
-          py::arg("base") = py::none(), py::arg("out") = py::none(),
+          py::arg("as_shot_light") = py::none(), py::arg("chart_rgb") = py::none(),
+          py::arg("chart") = py::none(), py::arg("light") = py::none(),
+          py::arg("rootpoly") = defaults::IDT_CHART_ROOTPOLY, py::arg("json") = py::none(),
+          py::arg("config") = py::none(), py::arg("base") = py::none(), py::arg("out") = py::none(),
           py::arg("base_space") = py::none(), R"doc(
 Camera input transforms (IDTs): the job of ``bandlight idt``, returning the
 document ``bandlight idt --json`` writes as a dict, its "gains", "matrix",

@@ -201,7 +201,7 @@ TEST_CASE("wall: an RGB wall's in-frustum drive makes the camera record the cont
         // the one exposure: every corner and grey, 1e-6 relative.
         const Eigen::Matrix3Xd c = Response(r, IdtLightForCct(b.light == "5600K" ? 5600 : 3200));
         const Mat3 intended = b.idt.matrix.inverse() * contentToWorking;
-        for (const Vec3 content : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1),
+        for (const Vec3& content : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1),
                                    Vec3(0.18, 0.18, 0.18), Vec3(0.2, 0.5, 0.9)})
         {
             INFO(content.transpose());
@@ -273,7 +273,7 @@ TEST_CASE("wall: the config switches its transforms with WALL_WB, each equal to 
     for (const jobs::WallBalance& b : result.balances)
     {
         INFO("white balance " << b.key);
-        for (const Eigen::Vector4d px :
+        for (const Eigen::Vector4d& px :
              {Eigen::Vector4d(1, 0, 0, 1), Eigen::Vector4d(0, 1, 0, 1), Eigen::Vector4d(0, 0, 1, 1),
               Eigen::Vector4d(0.3, 0.6, 0.1, 1)})
         {

@@ -109,3 +109,25 @@ def test_camera_looks_name_the_input_space_they_expect(tmp_path):
     described = [looks.getLook(n).getDescription() for n in looks.getLookNames()]
     assert described and all(f"input colour space '{space}'" in d for d in described)
     assert doc["config"].getColorSpace(space) is not None
+
+
+def test_wall_equals_the_command(tmp_path):
+    # The docs' RGB wall (docs/wall.md), through Python and the command.
+    from conftest import SOURCE_DIR
+    wall = SOURCE_DIR / "docs" / "examples" / "wall"
+    camera = SOURCE_DIR / "tests" / "data" / "rawtoaces" / "arri_d21_380_780_5.json"
+    emitters = {"R": wall / "red.csv", "G": wall / "green.csv", "B": wall / "blue.csv"}
+    doc = bandlight.wall(emitters, camera, ["5600K", "3200K"], content_space="rec709",
+                         out=tmp_path / "py")
+    by_cli = cli_json("wall", "--emitter", *[f"{k}={v}" for k, v in emitters.items()],
+                      "--camera", camera, "--white-balance", "5600K", "3200K",
+                      "--content-space", "rec709", "--out", tmp_path / "cli", "--json")
+    assert [b["key"] for b in doc["white_balances"]] == ["5600K", "3200K"]
+    for a, b in zip(doc["white_balances"], by_cli["white_balances"]):
+        np.testing.assert_allclose(a["in_frustum"]["drive_matrix"],
+                                   b["in_frustum"]["drive_matrix"], rtol=1e-12)
+        assert a["white_scores"]["cri"]["Ra"] == pytest.approx(b["white_scores"]["cri"]["Ra"])
+    assert (tmp_path / "py" / "config.ocio").exists()
+    with pytest.raises(ValueError, match="at least three emitters|3 emitters"):
+        bandlight.wall({"R": wall / "red.csv"}, camera, "5600K", content_space="rec709",
+                       out=tmp_path / "bad")
