@@ -39,36 +39,6 @@ Score CctScore(const Spectrum& light, const ScoreContext&)
     return s;
 }
 
-Score CriScore(const Spectrum& light, const ScoreContext&)
-{
-    Score s{"cri", {}, "", {}};
-    ColourRendering cr;
-    try
-    {
-        cr = ComputeColourRendering(light);
-    }
-    catch (const Exception& e)
-    {
-        s.warnings.push_back(std::string("no value: ") + e.what());
-        return s;
-    }
-    std::vector<std::string> labels;
-    for (size_t i = 0; i < cr.r.size(); ++i)
-    {
-        labels.push_back("R" + std::to_string(i + 1));
-    }
-    s.fields = {Value("Ra", cr.ra), List("R", {cr.r.begin(), cr.r.end()}, labels)};
-    s.reference = cr.cctK < 5000.0 ? "Planckian" : "CIE daylight";
-    s.reference += " at " + std::to_string(std::lround(cr.cctK)) + " K";
-    if (cr.outsideTolerance)
-    {
-        s.warnings.push_back(
-            "|Duv| > 5.4e-3: CIE 13.3 does not consider Ra meaningful this far from the "
-            "Planckian locus");
-    }
-    return s;
-}
-
 /// Labels "<name>1"… for a list of `n`.
 std::vector<std::string> Numbered(const std::string& name, size_t n)
 {
@@ -94,6 +64,28 @@ Score Guarded(const char* key, Compute&& compute)
     {
         return {key, {}, "", {std::string("no value: ") + e.what()}};
     }
+}
+
+Score CriScore(const Spectrum& light, const ScoreContext&)
+{
+    return Guarded("cri",
+                   [&]
+                   {
+                       const ColourRendering cr = ComputeColourRendering(light);
+                       Score s{"cri",
+                               {Value("Ra", cr.ra),
+                                List("R", {cr.r.begin(), cr.r.end()}, Numbered("R", cr.r.size()))},
+                               std::string(cr.cctK < 5000.0 ? "Planckian" : "CIE daylight") +
+                                   " at " + std::to_string(std::lround(cr.cctK)) + " K",
+                               {}};
+                       if (cr.outsideTolerance)
+                       {
+                           s.warnings.push_back(
+                               "|Duv| > 5.4e-3: CIE 13.3 does not consider Ra meaningful this "
+                               "far from the Planckian locus");
+                       }
+                       return s;
+                   });
 }
 
 Score Cie2017Score(const Spectrum& light, const ScoreContext&)
