@@ -34,7 +34,6 @@ static_assert(kWeights[kBands - 1] == 3.0 / 15.0 && kWeights[kBands - 2] == 11.0
               "one weight per band");
 
 constexpr double kMinCct = 1000.0;
-constexpr double kDaylightFrom = 4000.0;
 constexpr double kMaxCct = 25000.0;
 
 std::string Format(const char* format, double a)
@@ -103,13 +102,17 @@ Spectrum SsiReference(double cctK)
         throw Exception("SSI: CCT " + Format("%.0f", cctK) +
                         " K is outside 1000–25000 K, where S-2018-001 defines a reference");
     }
-    return cctK < kDaylightFrom ? Planckian(cctK, kFirstNm, 1.0, kSamples)
-                                : Daylight(cctK).resampled(kFirstNm, 1.0, kSamples);
+    // CIE 224's reference on a grid from 375 nm to the end of the visible,
+    // so the two lights of a blend are matched in luminance over all of it,
+    // then cut to the SSI's range.
+    constexpr size_t kVisible = size_t(780.0 - kFirstNm) + 1;
+    return ColourFidelityReference(cctK, kFirstNm, 1.0, kVisible)
+        .resampled(kFirstNm, 1.0, kSamples);
 }
 
 std::string SsiReferenceName(double cctK)
 {
-    return Format(cctK < kDaylightFrom ? "Planckian %.0f K" : "CIE daylight %.0f K", cctK);
+    return ColourFidelityReferenceName(cctK);
 }
 
 SpectralSimilarity ComputeSpectralSimilarity(const Spectrum& test, const Spectrum& reference,

@@ -33,8 +33,11 @@ struct SpectralSimilarity
 };
 
 /// The default SSI reference at `cctK` (Academy S-2018-001): a Planckian
-/// radiator below 4000 K, CIE daylight from 4000 K to 25000 K, on 375–675 nm
-/// at 1 nm. Throws Exception outside 1000–25000 K.
+/// radiator up to 4000 K, CIE daylight from 5000 K to 25000 K, and between
+/// them the luminance-matched blend of the two in proportion to the CCT's
+/// place, as CIE 224:2017 forms its reference (ColourFidelityReference,
+/// its luminances over 375–780 nm), on 375–675 nm at 1 nm. Throws Exception
+/// outside 1000–25000 K.
 Spectrum SsiReference(double cctK);
 
 /// The name of SsiReference(cctK).

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/Illuminants.h"
 #include "spectral/SpectralSimilarity.h"
@@ -81,10 +82,10 @@ TEST_CASE("SSI of a light against itself is 100, at any scale", "[spectral][ssi]
 
 TEST_CASE("The default SSI reference follows the light's CCT", "[spectral][ssi]")
 {
-    // Academy S-2018-001: a Planckian radiator below 4000 K, CIE daylight
-    // from 4000 K. CIE A is a Planckian radiator (2856 K on today's c2,
-    // CIE 15:2004 §3.1), D65 is the daylight of its CCT: both score 100 to
-    // the rounding of their 5 nm tables.
+    // Academy S-2018-001: a Planckian radiator up to 4000 K, CIE daylight
+    // from 5000 K, blended between. CIE A is a Planckian radiator (2856 K on
+    // today's c2, CIE 15:2004 §3.1), D65 is the daylight of its CCT: both
+    // score 100 to the rounding of their 5 nm tables.
     const SpectralSimilarity a = ComputeSpectralSimilarity(BuiltinIlluminant("A"));
     CHECK(a.cctK == Approx(2856.0).margin(1.0));
     CHECK_THAT(a.referenceName, Catch::StartsWith("Planckian 285"));
@@ -92,14 +93,41 @@ TEST_CASE("The default SSI reference follows the light's CCT", "[spectral][ssi]"
     const SpectralSimilarity d65 = ComputeSpectralSimilarity(BuiltinIlluminant("D65"));
     CHECK_THAT(d65.referenceName, Catch::StartsWith("CIE daylight 650"));
     CHECK(d65.ssi == 100.0);
-    // The rule's two sides.
-    const Spectrum p = SsiReference(3999.0);
-    const Spectrum d = SsiReference(4000.0);
+
+    // The rule's three parts, each against its definition written out here:
+    // shapes compared as ratios to 560 nm (SSI is blind to scale).
+    const auto shape = [](const Spectrum& s, double nm) { return s(nm) / s(560.0); };
+    const Spectrum p = SsiReference(4000.0);
     CHECK(p.start() == 375.0);
     CHECK(p.size() == 301);
-    CHECK(p[185] == Approx(Planckian(3999.0, 375.0, 1.0, 301)[185]).epsilon(1e-12));
-    CHECK(d[185] == Approx(Daylight(4000.0)(560.0)).epsilon(1e-12));
+    const Spectrum planck = Planckian(4000.0, 375.0, 1.0, 406);
+    for (double nm : {375.0, 450.0, 675.0})
+    {
+        CHECK(shape(p, nm) == Approx(shape(planck, nm)).epsilon(1e-12));
+    }
+    const Spectrum d = SsiReference(5000.0);
+    for (double nm : {375.0, 450.0, 675.0})
+    {
+        CHECK(shape(d, nm) == Approx(shape(Daylight(5000.0), nm)).epsilon(1e-12));
+    }
+    // 4250 K: a quarter of the way from 4000 K, so 3/4 Planckian and 1/4
+    // daylight, each first brought to the same luminance (CIE 1931 Y over
+    // 375–780 nm).
+    const Spectrum b = SsiReference(4250.0);
+    const Spectrum p4250 = Planckian(4250.0, 375.0, 1.0, 406);
+    const Spectrum d4250 = Daylight(4250.0).resampled(375.0, 1.0, 406);
+    const double yp = IntegrateXyz(p4250, Observer::CIE1931_2DEG).y();
+    const double yd = IntegrateXyz(d4250, Observer::CIE1931_2DEG).y();
+    const auto mix = [&](double nm) { return 0.75 * p4250(nm) / yp + 0.25 * d4250(nm) / yd; };
+    for (double nm : {375.0, 420.0, 500.0, 600.0, 675.0})
+    {
+        CHECK(b(nm) / b(560.0) == Approx(mix(nm) / mix(560.0)).epsilon(1e-9));
+    }
+    // Neither end: the blend differs from both by more than rounding.
+    CHECK(ComputeSpectralSimilarity(b, p4250).unrounded < 99.9);
+    CHECK(ComputeSpectralSimilarity(b, d4250).unrounded < 99.9);
     CHECK(SsiReferenceName(3999.4) == "Planckian 3999 K");
+    CHECK(SsiReferenceName(4250.0) == "blend at 4250 K: 75 % Planckian, 25 % CIE daylight");
     CHECK(SsiReferenceName(5600.0) == "CIE daylight 5600 K");
     CHECK_THROWS_WITH(SsiReference(30000.0), Catch::Contains("1000–25000 K"));
 }
