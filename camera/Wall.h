@@ -80,8 +80,10 @@ private:
 /// (3 × N, balanced camera RGB per unit drive) and the record the content
 /// asks for (`contentToRecord`: content RGB → balanced camera RGB, the
 /// IDT's inverse after content → working): the drive D (N × 3) with
-/// response · D = exposure · contentToRecord, exactly for three emitters,
-/// the minimum-norm (Moore–Penrose) solution of those equations for more;
+/// response · D = exposure · contentToRecord, exactly for three emitters;
+/// for more, the non-negative D (so every colour of the content cube gets a
+/// drive a wall can emit) of least error, the least drive among equals —
+/// exact whenever a non-negative exact solution exists;
 /// `exposure` scales content white's largest drive to 1. Throws Exception
 /// naming the two most collinear emitters when the response's condition
 /// number (unit columns) exceeds `maxCondition`, and an emitter the camera

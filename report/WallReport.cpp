@@ -69,9 +69,11 @@ Json Conventions(const WallResult& r)
              working + "), records the wall driven for content c as the plate c carried into " +
              working + ", times one exposure (content white drives the most driven emitter at 1)"},
         {"solution",
-         "three emitters: the exact inverse; more: the minimum-norm (Moore-Penrose) exact "
-         "solution; the condition number is of the camera's response with each emitter's "
-         "column of unit length"},
+         "three emitters: the exact inverse; more: the non-negative drive of least error (every "
+         "colour of the content cube driven non-negatively), the least drive among equals: "
+         "'non-negative minimum-norm' when it is exact, 'non-negative least-squares' when no "
+         "exact drive is non-negative; the condition number is of the camera's response with "
+         "each emitter's column of unit length"},
         {"depicted_light",
          "the wall shows a light L with the content whose plate is that of a white card under "
          "L for this white balance, through the in-frustum transform, its largest drive 1"},

@@ -71,8 +71,10 @@ struct WallInFrustum
     /// N × 3: content RGB → the N emitters' drives (1: the emitter's
     /// spectrum as its file gives it).
     Eigen::MatrixXd drive;
-    /// "exact" (three emitters) or "minimum-norm" (the Moore–Penrose
-    /// solution of the exact equations, more emitters).
+    /// "exact" (three emitters); with more, "non-negative minimum-norm"
+    /// (the least non-negative drive of the exact solutions) or, when no
+    /// exact solution is non-negative, "non-negative least-squares" (the
+    /// closest non-negative one: `residual` says how close).
     std::string solution;
     /// The camera's balanced record of the wall driven for content c is
     /// exposure × the record the content asks for: one scale, chosen so that

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `wall` as a C++ host calls it, on synthetic walls of Gaussian emitters
 // (stated below) and rawtoaces' ARRI D21: the in-frustum drive is exact
-// (3 emitters) or the minimum-norm exact one (4), both corrections lower the
+// (3 emitters) or the least non-negative exact one (4), both corrections lower the
 // out-of-frustum error and do no worse than a plain least-squares fit of
 // their form, and the written config — validated, read back — gives each
 // white balance's transforms through the context variable, equal to its
@@ -217,7 +217,7 @@ TEST_CASE("wall: an RGB wall's in-frustum drive makes the camera record the cont
     CheckOutOfFrustum(result);
 }
 
-TEST_CASE("wall: an RGBW wall gets the minimum-norm exact drive, its fourth drive in alpha",
+TEST_CASE("wall: an RGBW wall gets the least non-negative exact drive, its fourth drive in alpha",
           "[jobs][wall]")
 {
     const jobs::WallRequest r = Request("rgbw", true);
@@ -230,20 +230,51 @@ TEST_CASE("wall: an RGBW wall gets the minimum-norm exact drive, its fourth driv
     {
         INFO("white balance " << b.light);
         const jobs::WallInFrustum& f = b.inFrustum;
-        CHECK(f.solution == "minimum-norm");
+        CHECK(f.solution == "non-negative minimum-norm");
         REQUIRE(f.drive.rows() == 4);
         const Eigen::Matrix3Xd c = Response(r, IdtLightForCct(b.light == "5600K" ? 5600 : 3200));
         const Mat3 intended = b.idt.matrix.inverse() *
                               SpaceToSpace(FindRgbSpace("rec709"), FindRgbSpace("aces2065-1"));
         // Exact: response · D = exposure · intended.
         CHECK((c * f.drive - f.exposure * intended).norm() < 1e-9 * (f.exposure * intended).norm());
-        // The smallest such D: its columns lie in the row space of the
-        // response (no component the camera cannot see).
-        const Eigen::MatrixXd projector = c.transpose() * (c * c.transpose()).inverse() * c;
-        CHECK((f.drive - projector * f.drive).norm() < 1e-9 * f.drive.norm());
-        CHECK(f.negativeCorners ==
-              int(std::count_if(f.corners.begin(), f.corners.end(),
-                                [](const jobs::WallCorner& k) { return k.negative; })));
+        // Non-negative: every colour of the content cube gets a drive a wall
+        // can emit (the drive is linear in the content).
+        CHECK(f.drive.minCoeff() >= 0.0);
+        CHECK(f.negativeCorners == 0);
+        // The least of the non-negative exact drives, found here on its own
+        // terms: with four emitters the exact drives of a content primary
+        // are d + z·v (v spanning the response's null space), non-negative
+        // on an interval of z; the smallest |d + z·v| there is the
+        // unconstrained minimiser clamped to the interval.
+        const Eigen::FullPivLU<Eigen::MatrixXd> lu(c);
+        const Eigen::MatrixXd kernel = lu.kernel();
+        REQUIRE(kernel.cols() == 1);
+        const Eigen::VectorXd v = kernel.col(0);
+        for (int k = 0; k < 3; ++k)
+        {
+            INFO("content primary " << k);
+            const Eigen::VectorXd d = f.drive.col(k);
+            double lo = -INFINITY;
+            double hi = INFINITY;
+            for (int j = 0; j < 4; ++j)
+            {
+                if (v(j) > 0.0)
+                {
+                    lo = std::max(lo, -d(j) / v(j));
+                }
+                else if (v(j) < 0.0)
+                {
+                    hi = std::min(hi, -d(j) / v(j));
+                }
+            }
+            REQUIRE(lo <= hi + 1e-12);
+            const double z = std::clamp(-d.dot(v) / v.dot(v), lo, hi);
+            CHECK(std::abs(z) * v.norm() < 1e-9 * d.norm());
+        }
+        // Where the exact equations allow negative drives, the smallest
+        // (Moore–Penrose) drive takes one: non-negativity is a real choice.
+        const Eigen::MatrixXd pinv = c.transpose() * (c * c.transpose()).inverse() * intended;
+        CHECK(pinv.minCoeff() < 0.0);
         // The config's drive: R, G, B and W in alpha, as the CTF file holds it.
         const Eigen::Vector4d content(0.2, 0.5, 0.9, 1.0);
         const Eigen::Vector4d drive =
@@ -400,6 +431,49 @@ TEST_CASE("wall: more than four emitters are solved and reported, not put in the
     CHECK(j["config"]["drives"].is_null());
     CHECK(j["white_balances"][0]["in_frustum"]["drive_matrix"].size() == 6);
     CheckOutOfFrustum(result);
+}
+
+TEST_CASE("wall: content wider than the emitters gets the closest non-negative drive",
+          "[jobs][wall]")
+{
+    // Rec.2020's primaries lie outside what the RGBW wall can show this
+    // camera: no exact drive is non-negative.
+    jobs::WallRequest r = Request("wide", true);
+    r.contentSpace = "rec2020";
+    r.whiteBalances = {"5600K"};
+    const jobs::WallResult result = jobs::MakeWall(r);
+    const jobs::WallBalance& b = result.balances.front();
+    const jobs::WallInFrustum& f = b.inFrustum;
+    CHECK(f.solution == "non-negative least-squares");
+    CHECK(f.drive.minCoeff() >= 0.0);
+    CHECK(f.negativeCorners == 0);
+    CHECK(f.residual > 1e-3);
+    // Optimal, by Karush–Kuhn–Tucker's conditions for min |R d − t| over
+    // d ≥ 0, checked from the camera and emitter files alone: the gradient
+    // Rᵀ(R d − t) is zero where an emitter is driven and not negative where
+    // it is dark (no non-negative step lowers the error).
+    const Eigen::Matrix3Xd c = Response(r, IdtLightForCct(5600));
+    const Mat3 target = f.exposure * b.idt.matrix.inverse() *
+                        SpaceToSpace(FindRgbSpace("rec2020"), FindRgbSpace("aces2065-1"));
+    for (int k = 0; k < 3; ++k)
+    {
+        INFO("content primary " << k);
+        const Eigen::VectorXd d = f.drive.col(k);
+        const Eigen::VectorXd g = c.transpose() * (c * d - target.col(k));
+        const double scale = (c.transpose() * target.col(k)).cwiseAbs().maxCoeff();
+        for (Eigen::Index j = 0; j < d.size(); ++j)
+        {
+            INFO("emitter " << j << " drive " << d(j) << " gradient " << g(j));
+            if (d(j) > 1e-9)
+            {
+                CHECK(std::abs(g(j)) < 1e-6 * scale);
+            }
+            else
+            {
+                CHECK(g(j) > -1e-6 * scale);
+            }
+        }
+    }
 }
 
 TEST_CASE("wall: emitters the camera sees nearly alike are refused with the condition number",
