@@ -108,6 +108,9 @@ void WriteOutputs(const WallRequest& r, WallResult& result)
             c.preCorrection = b.preCorrection;
         }
         c.post = b.post;
+        c.postNonLinear = [rootpoly = b.postRootPolynomial](float* rgb, size_t count)
+        { rootpoly.apply(rgb, count); };
+        c.postNonLinearDescription = d.postRootPolynomial;
         c.idtDescription = d.idt;
         c.inFrustumDescription = d.inFrustum;
         c.preDescription = d.preCorrection;

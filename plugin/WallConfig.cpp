@@ -3,6 +3,8 @@
 // white balance, chosen by a context variable.
 #include "plugin/WallConfig.h"
 
+#include <algorithm>
+
 #include "plugin/detail/ConfigParts.h"
 #include "spectral/Exception.h"
 #include "transforms/Idt.h"
@@ -92,6 +94,9 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
     config.setDescription(o.description.c_str());
     config.addEnvironmentVar(o.variable.c_str(), o.balances.front().key.c_str());
 
+    const bool nonLinear =
+        std::all_of(o.balances.begin(), o.balances.end(),
+                    [](const WallConfigBalance& b) { return bool(b.postNonLinear); });
     const Eigen::Index n = o.balances.front().inFrustum.rows();
     const bool drives = n == 3 || n == 4;
     const bool alpha = n == 4;
@@ -101,6 +106,19 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
                                       Described(MakeMatrixTransform(b.idt), b.idtDescription));
         package.lutFiles.emplace_back(WallFile(b.key, "post_camera", false),
                                       Described(MakeMatrixTransform(b.post), b.postDescription));
+        if (nonLinear)
+        {
+            // As the config's other non-linear looks are baked: the log2
+            // shaper of non-linear methods aligned to the lattice, which keeps
+            // grey on the lattice's diagonal and holds HDR plates.
+            const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(o.lutSize);
+            OCIO::GroupTransformRcPtr lattice =
+                LatticeTransform(b.postNonLinear, shaper, o.lutSize);
+            package.lutFiles.emplace_back(
+                WallFile(b.key, "post_camera_rootpoly", false),
+                Described(lattice, b.postNonLinearDescription + " " + std::to_string(o.lutSize) +
+                                       "^3 LUT, shaper " + shaper.describe() + "."));
+        }
         if (drives)
         {
             package.lutFiles.emplace_back(
@@ -160,6 +178,20 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
                           var + " names.")
                              .c_str());
     config.addLook(look);
+    if (nonLinear)
+    {
+        OCIO::LookRcPtr rootpoly = OCIO::Look::Create();
+        rootpoly->setName(kWallPostRootPolyLook);
+        rootpoly->setProcessSpace(ColorSpaceName(working).c_str());
+        rootpoly->setTransform(File(WallFileTemplate(o.variable, "post_camera_rootpoly", false)));
+        rootpoly->setDescription(
+            ("The same correction as " + std::string(kWallPostLook) +
+             " by a degree-2 root polynomial (lower error on the training set; a 3D LUT with a "
+             "shaper), for the camera white balance " +
+             var + " names.")
+                .c_str());
+        config.addLook(rootpoly);
+    }
     config.validate();
     return package;
 }

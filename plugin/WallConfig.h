@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "luts/LutWriter.h"
 #include "plugin/ConfigBuilder.h"
 
 namespace bandlight
@@ -29,11 +30,16 @@ struct WallConfigBalance
     Eigen::MatrixXd preCorrection;
     /// Working RGB → working RGB.
     Mat3 post = Mat3::Identity();
+    /// The same correction as a non-linear op (the wall's root polynomial),
+    /// on working RGB float triples in place; baked as shaper + 3D LUT.
+    /// Empty: no such look.
+    PixelFunction postNonLinear;
     /// What each file says it was made from.
     std::string idtDescription;
     std::string inFrustumDescription;
     std::string preDescription;
     std::string postDescription;
+    std::string postNonLinearDescription;
 };
 
 struct WallConfigOptions
@@ -44,12 +50,15 @@ struct WallConfigOptions
     std::string variable;                     ///< the context variable: WALL_WB
     std::vector<WallConfigBalance> balances;  ///< the first is the variable's default
     std::string description;
+    /// Lattice points per axis of the non-linear post-camera look's 3D LUT.
+    int lutSize = defaults::CONFIG_LUT_SIZE;
 };
 
 /// The names of the config's colour spaces and look.
 inline constexpr const char* kWallDriveSpace = "LED wall drive";
 inline constexpr const char* kWallLightingSpace = "LED wall drive - lighting";
 inline constexpr const char* kWallPostLook = "wall_post_camera";
+inline constexpr const char* kWallPostRootPolyLook = "wall_post_camera_rootpoly";
 
 /// Where a white balance's file lives in the package: luts/wall/KEY/NAME.EXT
 /// (CLF for three-channel transforms; OCIO's CTF where a drive is in
@@ -66,7 +75,9 @@ std::string WallFileTemplate(const std::string& variable, const std::string& nam
 /// - kWallDriveSpace (N ≤ 4): the reference → content → in-frustum drive
 ///   (RGB, or RGBA with the fourth emitter in alpha);
 /// - kWallLightingSpace (N ≤ 4): the same, then the lighting pre-correction;
-/// - the look kWallPostLook in the working space: the post-camera correction.
+/// - the look kWallPostLook in the working space: the post-camera correction;
+/// - the look kWallPostRootPolyLook (when every balance has postNonLinear):
+///   the same correction as its non-linear form, shaper + 3D LUT.
 /// Every transform is also a file of the package (the FileTransforms' targets).
 /// Built with the Config API and validated.
 ConfigPackage BuildWallConfig(const WallConfigOptions& options);

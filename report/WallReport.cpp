@@ -321,6 +321,14 @@ WallDescriptions DescribeWallBalance(const WallResult& r, const WallBalance& b)
          << Fixed(b.postFit.before.mean, 2) << " before, " << Fixed(b.postFit.after.mean, 2)
          << " after. " << from.str();
     d.postCamera = post.str();
+    std::ostringstream rootpoly;
+    rootpoly << "Post-camera, degree-2 root polynomial: the plate of a scene lit by the wall "
+                "showing "
+             << b.light << " made to look as under " << b.light << ": dE00 mean "
+             << Fixed(b.postRootPolynomialFit.before.mean, 2) << " before, "
+             << Fixed(b.postRootPolynomialFit.after.mean, 2) << " after (the root polynomial "
+             << "itself, before its LUT). " << from.str();
+    d.postRootPolynomial = rootpoly.str();
     return d;
 }
 

@@ -34,6 +34,7 @@ struct WallDescriptions
     std::string inFrustum;
     std::string preCorrection;
     std::string postCamera;
+    std::string postRootPolynomial;
 };
 WallDescriptions DescribeWallBalance(const WallResult& result, const WallBalance& balance);
 
