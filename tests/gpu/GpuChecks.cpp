@@ -131,9 +131,10 @@ Case MakeCase(std::string name, const OCIO::ConstProcessorRcPtr& processor)
 }
 
 /// Every transform a config offers: each look (scene_linear in and out),
-/// each named transform, each colour space to and from scene_linear, each
-/// display/view from scene_linear.
-std::vector<Case> ConfigCases(const OCIO::ConstConfigRcPtr& config)
+/// each named transform, each colour space to and from scene_linear (only
+/// from it for those in `oneWay`), each display/view from scene_linear.
+std::vector<Case> ConfigCases(const OCIO::ConstConfigRcPtr& config,
+                              const std::set<std::string>& oneWay)
 {
     std::vector<Case> cases;
     const std::string linear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR)->getName();
@@ -160,8 +161,11 @@ std::vector<Case> ConfigCases(const OCIO::ConstConfigRcPtr& config)
     {
         const std::string cs = config->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL,
                                                                 OCIO::COLORSPACE_ALL, i);
-        cases.push_back(MakeCase("colour space " + cs + " -> " + linear,
-                                 config->getProcessor(cs.c_str(), linear.c_str())));
+        if (oneWay.count(cs) == 0)
+        {
+            cases.push_back(MakeCase("colour space " + cs + " -> " + linear,
+                                     config->getProcessor(cs.c_str(), linear.c_str())));
+        }
         cases.push_back(MakeCase("colour space " + linear + " -> " + cs,
                                  config->getProcessor(linear.c_str(), cs.c_str())));
     }

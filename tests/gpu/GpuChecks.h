@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -72,9 +73,11 @@ struct Case
 Case MakeCase(std::string name, const OCIO::ConstProcessorRcPtr& processor);
 
 /// Every transform a config offers: each look (scene_linear in and out),
-/// each named transform, each colour space to and from scene_linear, each
-/// display/view from scene_linear.
-std::vector<Case> ConfigCases(const OCIO::ConstConfigRcPtr& config);
+/// each named transform, each colour space to and from scene_linear (only
+/// from it for the spaces in `oneWay`: an LED wall's four-emitter drive, a
+/// 3 → 4 map with no inverse), each display/view from scene_linear.
+std::vector<Case> ConfigCases(const OCIO::ConstConfigRcPtr& config,
+                              const std::set<std::string>& oneWay = {});
 
 /// A built-in illuminant as a Light.
 Light L(const std::string& name);

@@ -4,14 +4,18 @@
 // exists for, and on Mesa's llvmpipe it computes what OCIO's CPU processor
 // computes.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <sstream>
 
 #include <catch2/catch.hpp>
 
 #include "gpu/GpuChecks.h"
+#include "jobs/WallJob.h"
 #include "luts/LutWriter.h"
+#include "plugin/WallConfig.h"
 #include "robustness/HardValues.h"
 #include "spectral/CameraFile.h"
 #include "spectral/Illuminants.h"
@@ -244,4 +248,76 @@ TEST_CASE("Camera input colour spaces (idt --config) compile and run on the GPU"
     }
     // Matrices only: no LUT among the config's transforms.
     CHECK(CheckConfigOnGpu(options, "idt") == 0);
+}
+
+TEST_CASE("An LED wall's config (bandlight wall) compiles and runs on the GPU for each white balance",
+          "[gpu][wall]")
+{
+    // The config `wall` writes for an RGBW wall (Gaussian emitters: R
+    // 630/20 nm, G 530/30, B 460/20 (centre / FWHM), W a 450/20 pump plus a
+    // 570/110 phosphor at 0.55) and rawtoaces' ARRI D21: drive spaces with
+    // the fourth drive in alpha, the IDT and both post-camera looks (3×3
+    // and root-polynomial LUT), each reached through ${WALL_WB}.
+    const TempDir dir("wall");
+    const auto emitter = [&](const std::string& name, const std::vector<std::array<double, 3>>& g)
+    {
+        const std::string path = dir.path() + "/" + name + ".csv";
+        std::ofstream o(path);
+        o << "wavelength," << name << "\n";
+        for (int l = 380; l <= 780; ++l)
+        {
+            double v = 0.0;
+            for (const auto& [centre, fwhm, peak] : g)
+            {
+                const double sigma = fwhm / (2.0 * std::sqrt(2.0 * std::log(2.0)));
+                v += peak * std::exp(-0.5 * (l - centre) * (l - centre) / (sigma * sigma));
+            }
+            o << l << "," << v << "\n";
+        }
+        return path;
+    };
+    jobs::WallRequest r;
+    r.emitters = {{"R", emitter("red", {{630, 20, 1}})},
+                  {"G", emitter("green", {{530, 30, 1}})},
+                  {"B", emitter("blue", {{460, 20, 1}})},
+                  {"W", emitter("white", {{450, 20, 1}, {570, 110, 0.55}})}};
+    r.camera = BANDLIGHT_TEST_DATA_ROOT "/rawtoaces/arri_d21_380_780_5.json";
+    r.whiteBalances = {"5600K", "3200K"};
+    r.contentSpace = "rec709";
+    r.out = dir.path() + "/wall";
+    const jobs::WallResult result = jobs::MakeWall(r);
+    REQUIRE(result.drives == "RGBA");
+    const OCIO::ConstConfigRcPtr written =
+        OCIO::Config::CreateFromFile((r.out + "/config.ocio").c_str());
+    std::vector<std::string> ids;
+    for (const char* key : {"5600K", "3200K"})
+    {
+        INFO("WALL_WB=" << key);
+        // As a host that sets the variable would see the config.
+        OCIO::ConfigRcPtr config = written->createEditableCopy();
+        config->addEnvironmentVar("WALL_WB", key);
+        // The drive spaces map content RGB to four drives: one way only
+        // (OCIO refuses the inverse of the singular 4×4, as docs/wall.md says).
+        CHECK_THROWS_WITH(config->getProcessor(kWallDriveSpace, "ACES2065-1"),
+                          Catch::Contains("Singular"));
+        const std::vector<Case> cases =
+            ConfigCases(config, {kWallDriveSpace, kWallLightingSpace});
+        long luts = 0;
+        for (const Case& c : cases)
+        {
+            luts += c.kind == Kind::LUT ? 1 : 0;
+            if (c.name == std::string("look ") + kWallPostRootPolyLook)
+            {
+                ids.push_back(c.processor->getCacheID());
+            }
+        }
+        // The root-polynomial look is a LUT; the drive spaces, the IDT and
+        // the 3×3 look are matrices.
+        CHECK(luts >= 1);
+        Report report;
+        CheckCasesOnGpu(cases, std::string("wall WALL_WB=") + key, report);
+    }
+    // The variable selects different files.
+    REQUIRE(ids.size() == 2);
+    CHECK(ids[0] != ids[1]);
 }
