@@ -148,6 +148,50 @@ TEST_CASE("Names and file names never reach gnuplot as code", "[robustness][host
     CHECK(Sh("ls -a " + ShellWord(dir) + " | grep -c tmp-").out == "0\n");
 }
 
+TEST_CASE("Light names and file names never reach gnuplot as code in quality --plot",
+          "[robustness][hostile][plot][quality]")
+{
+    const std::string dir = Folder("quality_plot");
+    const std::string marker = dir + "/INJECTED";
+    const auto quality = [&](const std::string& args)
+    {
+        return Sh("cd " + ShellWord(dir) + " && '" + BANDLIGHT_EXE + "' quality " + args);
+    };
+    const std::vector<std::string> payloads = {
+        "a'.system('touch INJECTED').'",
+        "a\".system(\"touch INJECTED\").\"",
+        "`touch INJECTED`",
+        "@MACRO' . system('touch INJECTED') . '",
+        "$DATA' . system('touch INJECTED') . '",
+        "EOD",
+    };
+    for (const std::string& p : payloads)
+    {
+        INFO(p);
+        // The payload as a light's name (a CSV column header), for the
+        // light and for the reference: both are drawn and labelled.
+        WriteText(dir + "/light.csv", Remittance("\"" + p + "\""));
+        for (const char* out : {"q.png", "q.svg"})
+        {
+            const Result r = quality("light.csv D65 --reference light.csv --plot " +
+                                     std::string(out));
+            CHECK(r.code == 0);
+            CHECK(Exists(dir + "/" + out));
+            CHECK_FALSE(Exists(marker));
+        }
+    }
+    // Payloads and line breaks in the light's file name and the plot's.
+    const std::string evil = "l'`touch INJECTED`$(touch INJECTED)\n'; system('touch INJECTED')\n.csv";
+    WriteText(dir + "/" + evil, Remittance("plain"));
+    const std::string evilOut = "p'.system('touch INJECTED').'`touch INJECTED`\n!touch INJECTED\n.png";
+    const Result r = quality(ShellWord(evil) + " --plot " + ShellWord(evilOut));
+    CHECK(r.code == 0);
+    CHECK(Exists(dir + "/" + evilOut));
+    CHECK_FALSE(Exists(marker));
+    // No gnuplot input is left behind.
+    CHECK(Sh("ls -a " + ShellWord(dir) + " | grep -c tmp-").out == "0\n");
+}
+
 TEST_CASE("Configs that refer to themselves are refused before OCIO recurses",
           "[robustness][hostile][config]")
 {
