@@ -369,8 +369,7 @@ WallBalance SolveWallBalance(const WallSetup& s, size_t b)
     const GridSpectra& training = s.sets.front().second;
     out.preCorrection = FitPreCorrection(setting, scenes, training, out.preFit);
     out.post = FitPostMatrix(setting, scenes[b], training, out.postFit);
-    out.postRootPolynomial =
-        FitPostRootPolynomial(setting, scenes[b], training, out.postRootPolynomialFit);
+    FitPostOp(s, camera, scenes[b], wb, out);
     out.postRegistry = RegistryPostErrors(s, camera, scenes[b], wb, training);
 
     const Mat3 post = out.post;

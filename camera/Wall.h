@@ -147,21 +147,27 @@ Eigen::MatrixXd FitPreCorrection(const WallSetting& setting, const std::vector<W
 Mat3 FitPostMatrix(const WallSetting& setting, const WallScene& scene, const GridSpectra& training,
                    WallFitFigures& figures);
 
-/// The same as a degree-2 root polynomial (also started from
-/// FitRootPolynomial, as rootpoly fits it).
-RootPolynomial FitPostRootPolynomial(const WallSetting& setting, const WallScene& scene,
-                                     const GridSpectra& training, WallFitFigures& figures);
-
 struct WallSetup;
 
-/// The method registry's own change of light for the plate, beside the
-/// post-camera look: the op of rootpoly-camera (Relighter, the camera set,
-/// its one IDT the white balance's) from the wall showing `scene` — its
-/// spectrum as a light — to `light`, on the plates of `set` under the wall,
-/// carried from the white balance's gains to the wall's own as the op
-/// expects; ΔE00 against the plates under the light as WallErrors measures.
-/// The op is fitted to the observer's colours under the light, not to this
-/// camera's plate of them: its floor is the camera's IDT error there.
+/// The post-camera look's non-linear form as the method registry's op:
+/// rootpoly-plate (a degree-2 root polynomial of least mean ΔE00 from the
+/// camera's plates under one light to its plates under another) from the
+/// wall showing `scene` — its spectrum as a light — to `light`, lit plates
+/// through the white balance's IDT, fitted on the training set: the same
+/// data the 3×3 is fitted on. Sets balance.postFrom, postMethod,
+/// postRootPolynomial (the op's) and postRootPolynomialFit (the op's fit's
+/// figures, FitRootPolynomialDe00 on those plates).
+void FitPostOp(const WallSetup& setup, const WallCamera& camera, const WallScene& scene,
+               const Light& light, WallBalance& balance);
+
+/// The method registry's rootpoly-camera op for the same change of light,
+/// beside the post-camera look: the op of rootpoly-camera (Relighter, the
+/// camera set, its one IDT the white balance's) from the wall showing
+/// `scene` to `light`, on the plates of `set` under the wall, carried from
+/// the white balance's gains to the wall's own as the op expects; ΔE00
+/// against the plates under the light as WallErrors measures. The op is
+/// fitted to the observer's colours under the light, not to this camera's
+/// plate of them: its floor is the camera's IDT error there.
 Statistics RegistryPostErrors(const WallSetup& setup, const WallCamera& camera,
                               const WallScene& scene, const Light& light, const GridSpectra& set);
 

@@ -13,6 +13,7 @@
 
 #include "camera/Wall.h"
 #include "spectral/Metrics.h"
+#include "transforms/De00Fit.h"
 #include "transforms/IlluminantChange.h"
 #include "transforms/Plates.h"
 #include "transforms/RootPolynomial.h"
@@ -43,172 +44,8 @@ private:
     MetricContext m_context;
 };
 
-/// CIEDE2000 to first order at a colour: d(L*a*b*) → (ΔL/S_L, ΔC/S_C,
-/// ΔH/S_H) with the weighting functions at `lab` (CIE 15:2004 §8.3; the
-/// rotation term and the a* rescaling G left out), so that the norm of the
-/// image of a small L*a*b* difference is about its ΔE00.
-Mat3 De00Jacobian(const Vec3& lab)
-{
-    constexpr double kPi = 3.14159265358979323846;
-    const double c = std::hypot(lab.y(), lab.z());
-    const double l50 = (lab.x() - 50.0) * (lab.x() - 50.0);
-    const double sl = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);
-    const double h = std::atan2(lab.z(), lab.y());
-    const double deg = kPi / 180.0;
-    const double t = 1.0 - 0.17 * std::cos(h - 30.0 * deg) + 0.24 * std::cos(2.0 * h) +
-                     0.32 * std::cos(3.0 * h + 6.0 * deg) - 0.20 * std::cos(4.0 * h - 63.0 * deg);
-    const double sc = 1.0 + 0.045 * c;
-    const double sh = 1.0 + 0.015 * c * t;
-    // Chroma along (a, b)/C, hue across it; a neutral has no direction: any.
-    const double ca = c > 1e-9 ? lab.y() / c : 1.0;
-    const double cb = c > 1e-9 ? lab.z() / c : 0.0;
-    Mat3 j;
-    // clang-format off
-    j << 1.0 / sl, 0.0,     0.0,
-         0.0,      ca / sc, cb / sc,
-         0.0,     -cb / sh, ca / sh;
-    // clang-format on
-    return j;
-}
-
-/// A correction linear in its parameters θ, on its fitting data: sample i
-/// predicts base_i + A_i θ (working RGB) for target_i, seen in L*a*b*
-/// relative to white `whites[white_i]`.
-struct LinearModel
-{
-    Eigen::Index parameters = 0;
-    std::vector<Eigen::MatrixXd> a;  ///< 3 × parameters each
-    std::vector<Vec3> base;
-    std::vector<Vec3> target;
-    std::vector<size_t> white;
-    std::vector<Vec3> whites;  ///< XYZ
-    Mat3 toXyz = Mat3::Identity();
-
-    void add(Eigen::MatrixXd ai, const Vec3& b, const Vec3& t, size_t w)
-    {
-        a.push_back(std::move(ai));
-        base.push_back(b);
-        target.push_back(t);
-        white.push_back(w);
-    }
-    Vec3 predict(size_t i, const Eigen::VectorXd& theta) const { return base[i] + a[i] * theta; }
-
-    /// min Σ weight_i ‖W_i (base_i + A_i θ − target_i)‖², W_i CIEDE2000 to
-    /// first order at the target (`perceptual`: De00Jacobian after the
-    /// L*a*b* Jacobian) or the identity; the minimum-norm θ where the data
-    /// leave directions free.
-    Eigen::VectorXd solve(const std::vector<double>& weight, bool perceptual) const
-    {
-        Eigen::MatrixXd m(3 * Eigen::Index(a.size()), parameters);
-        Eigen::VectorXd rhs(m.rows());
-        for (size_t i = 0; i < a.size(); ++i)
-        {
-            Mat3 w = Mat3::Identity() * std::sqrt(weight[i]);
-            if (perceptual)
-            {
-                const Vec3 xyz = toXyz * target[i];
-                const Vec3& reference = whites[white[i]];
-                w *= De00Jacobian(XyzToLab(xyz, reference)) * LabJacobian(xyz, reference) * toXyz;
-            }
-            m.middleRows(3 * Eigen::Index(i), 3) = w * a[i];
-            rhs.segment<3>(3 * Eigen::Index(i)) = w * (target[i] - base[i]);
-        }
-        return m.completeOrthogonalDecomposition().solve(rhs);
-    }
-
-    /// ΔE00 of each sample's prediction.
-    std::vector<double> values(const Eigen::VectorXd& theta) const
-    {
-        std::vector<De00> de;
-        for (const Vec3& w : whites)
-        {
-            de.emplace_back(toXyz, w);
-        }
-        std::vector<double> v;
-        for (size_t i = 0; i < a.size(); ++i)
-        {
-            v.push_back(de[white[i]](predict(i, theta), target[i]));
-        }
-        return v;
-    }
-    Statistics errors(const Eigen::VectorXd& theta) const { return Summarise(values(theta)); }
-};
-
-/// How many reweightings the CIELAB fit takes at most: the mean error
-/// settles within a few (the best iterate is kept).
-constexpr int kReweightings = 12;
-
-/// The plain least-squares θ, and bandlight's: iteratively reweighted least
-/// squares in CIEDE2000 from the plain fit and from each of `starts` — each
-/// residual seen as ΔE00 to first order at its target (De00Jacobian) and
-/// weighted by the inverse of its current ΔE00, which minimises the sum of
-/// the errors (their mean) rather than of their squares — keeping the θ of
-/// the lowest mean ΔE00 on the data (the plain fit's when nothing beats it:
-/// never worse). `figures` gets the
-/// error with θ = 0, the plain fit's and the chosen one's.
-Eigen::VectorXd FitModel(const LinearModel& m, const std::vector<Eigen::VectorXd>& starts,
-                         WallFitFigures& figures)
-{
-    const std::vector<double> ones(m.a.size(), 1.0);
-    const Eigen::VectorXd plain = m.solve(ones, false);
-    figures.before = m.errors(Eigen::VectorXd::Zero(m.parameters));
-    figures.leastSquares = m.errors(plain);
-    figures.after = figures.leastSquares;
-    figures.fit = "least-squares";
-    Eigen::VectorXd best = plain;
-    std::vector<Eigen::VectorXd> from = starts;
-    from.insert(from.begin(), plain);
-    for (Eigen::VectorXd theta : from)
-    {
-        for (int k = 0; k <= kReweightings; ++k)
-        {
-            if (k > 0)
-            {
-                std::vector<double> w = m.values(theta);
-                for (double& e : w)
-                {
-                    e = 1.0 / std::max(e, 0.05);  // a perfect sample does not take over
-                }
-                theta = m.solve(w, true);
-            }
-            const Statistics s = m.errors(theta);
-            if (s.mean < figures.after.mean)
-            {
-                figures.after = s;
-                figures.fit = "ciede2000";
-                best = theta;
-            }
-        }
-    }
-    return best;
-}
-
 /// The post-camera data: plates under the wall → plates under the light,
-/// L*a*b* relative to the light's white, for a model of `features` terms a
-/// channel (3: the 3×3; the root polynomial's terms).
-template <typename Features>
-LinearModel PostModel(const WallSetting& s, const WallScene& scene, const GridSpectra& training,
-                      Eigen::Index features, const Features& phi)
-{
-    const Eigen::Matrix3Xd in = s.camera.plates(s.emitters * scene.drive, training);
-    const Eigen::Matrix3Xd out = s.camera.plates(scene.real, training);
-    LinearModel m;
-    m.parameters = 3 * features;
-    m.toXyz = s.camera.rgbToXyz();
-    m.whites = {m.toXyz * s.camera.plate(scene.real)};
-    for (Eigen::Index i = 0; i < in.cols(); ++i)
-    {
-        const Eigen::VectorXd f = phi(Vec3(in.col(i)));
-        Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3, m.parameters);
-        for (Eigen::Index r = 0; r < 3; ++r)
-        {
-            a.block(r, r * features, 1, features) = f.transpose();  // θ: the rows of M
-        }
-        m.add(std::move(a), Vec3::Zero(), out.col(i), 0);
-    }
-    return m;
-}
-
+/// L*a*b* relative to the light's white.
 ColourFit PostData(const WallSetting& s, const WallScene& scene, const GridSpectra& training)
 {
     const GridSpectrum wall = s.emitters * scene.drive;
@@ -225,26 +62,6 @@ ColourFit PostData(const WallSetting& s, const WallScene& scene, const GridSpect
     d.rgbToXyz = s.camera.rgbToXyz();
     d.labWhite = d.rgbToXyz * d.whiteOut;
     return d;
-}
-
-/// The rows of a 3 × k matrix as θ, and back.
-Eigen::VectorXd RowsOf(const Eigen::MatrixXd& m)
-{
-    Eigen::VectorXd v(m.size());
-    for (Eigen::Index r = 0; r < m.rows(); ++r)
-    {
-        v.segment(r * m.cols(), m.cols()) = m.row(r).transpose();
-    }
-    return v;
-}
-Eigen::MatrixXd FromRows(const Eigen::VectorXd& v, Eigen::Index cols)
-{
-    Eigen::MatrixXd m(3, cols);
-    for (Eigen::Index r = 0; r < 3; ++r)
-    {
-        m.row(r) = v.segment(r * cols, cols).transpose();
-    }
-    return m;
 }
 
 }  // namespace
@@ -275,7 +92,7 @@ Eigen::MatrixXd FitPreCorrection(const WallSetting& s, const std::vector<WallSce
     {
         byDrive.push_back(s.camera.plateByDrive(training.col(i), s.emitters));
     }
-    LinearModel m;
+    De00Model m;
     m.parameters = n * n;
     m.toXyz = s.camera.rgbToXyz();
     for (size_t j = 0; j < scenes.size(); ++j)
@@ -296,40 +113,51 @@ Eigen::MatrixXd FitPreCorrection(const WallSetting& s, const std::vector<WallSce
     // Minimum norm: the drives of all scenes lie in the in-frustum
     // transform's three-dimensional range, so Δ is determined there only
     // and P is the identity off it.
-    const Eigen::VectorXd delta = FitModel(m, {}, figures);
+    const Eigen::VectorXd delta = FitDe00(m, {}, figures);
     return Eigen::MatrixXd::Identity(n, n) + Eigen::Map<const Eigen::MatrixXd>(delta.data(), n, n);
 }
 
 Mat3 FitPostMatrix(const WallSetting& s, const WallScene& scene, const GridSpectra& training,
                    WallFitFigures& figures)
 {
-    const LinearModel m =
-        PostModel(s, scene, training, 3, [](const Vec3& p) { return Eigen::VectorXd(p); });
+    const ColourFit data = PostData(s, scene, training);
     // bandlight's 3×3 for a change of light (white kept, first-order CIELAB)
     // as one more start.
-    const Eigen::VectorXd start = RowsOf(FitLabMatrix(PostData(s, scene, training)));
-    const Eigen::VectorXd theta = FitModel(m, {start}, figures);
+    const Eigen::VectorXd start = RowsOf(FitLabMatrix(data));
+    const Eigen::VectorXd theta = FitDe00(RootPolynomialModel(data, 1), {start}, figures);
     // θ = 0 is no look at all: "before" is the identity's error.
     figures.before = WallErrors(s, scene.drive, scene, training);
     return FromRows(theta, 3);
 }
 
-RootPolynomial FitPostRootPolynomial(const WallSetting& s, const WallScene& scene,
-                                     const GridSpectra& training, WallFitFigures& figures)
+void FitPostOp(const WallSetup& setup, const WallCamera& camera, const WallScene& scene,
+               const Light& light, WallBalance& balance)
 {
-    constexpr int kDegree = 2;
-    const int terms = RootPolynomial::Terms(kDegree);
-    const LinearModel m = PostModel(s, scene, training, terms,
-                                    [terms](const Vec3& p)
-                                    {
-                                        Eigen::VectorXd f(terms);
-                                        RootPolynomial::Features(p, kDegree, f.data());
-                                        return f;
-                                    });
-    const RootPolynomial rootpoly = FitRootPolynomial(PostData(s, scene, training), kDegree);
-    const Eigen::VectorXd theta = FitModel(m, {RowsOf(rootpoly.matrix())}, figures);
-    figures.before = WallErrors(s, scene.drive, scene, training);
-    return RootPolynomial(kDegree, FromRows(theta, terms));
+    const GridSpectrum wallSamples = setup.emitters * scene.drive;
+    balance.postFrom = {
+        "the wall showing " + light.name,
+        Spectrum(SurfaceRenderer::kStartNm, SurfaceRenderer::kStepNm,
+                 std::vector<double>(wallSamples.data(), wallSamples.data() + wallSamples.size()))};
+    // The camera balanced once, for the light, and read through its IDT:
+    // lit plates of rootpoly-plate with that light as the IDT's.
+    MethodSpec method = WithCamera(ParseMethod("rootpoly-plate"),
+                                   std::make_shared<const SpectralCamera>(setup.camera), light);
+    method.training = setup.training;
+    method.idt = camera.idt();
+    method.plates = Plates{PlateConvention::LIT, setup.adaptation};
+    balance.postTo = light;
+    const Relighter op(balance.postFrom, light, method, setup.working, setup.observer);
+    balance.postMethod = std::move(method);
+    balance.postRootPolynomial = *op.rootPolynomial();
+    // Its figures: the same fit on the wall's own plates (each light at the
+    // wall's level; the op's at luminance 1, a scale the fit does not see)
+    // gives the plain least-squares and identity figures; the error after
+    // is the op's, measured on those plates.
+    const WallSetting setting{camera, setup.emitters, setup.observer};
+    const GridSpectra& training = setup.sets.front().second;
+    FitRootPolynomialDe00(PostData(setting, scene, training), 2, &balance.postRootPolynomialFit);
+    balance.postRootPolynomialFit.after = WallErrors(setting, scene.drive, scene, training,
+                                                     [&](const Vec3& p) { return op.apply(p); });
 }
 
 Statistics RegistryPostErrors(const WallSetup& setup, const WallCamera& camera,

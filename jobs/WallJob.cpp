@@ -108,8 +108,10 @@ void WriteOutputs(const WallRequest& r, WallResult& result)
             c.preCorrection = b.preCorrection;
         }
         c.post = b.post;
-        c.postNonLinear = [rootpoly = b.postRootPolynomial](float* rgb, size_t count)
-        { rootpoly.apply(rgb, count); };
+        // The op's own OCIO form, as every non-linear look of a config.
+        c.postNonLinear = IlluminantChangeTransform(
+            b.postFrom, b.postTo, b.postMethod, FindRgbSpace(result.workingSpace),
+            ParseObserver(r.observer), defaults::CONFIG_LUT_SIZE);
         c.postNonLinearDescription = d.postRootPolynomial;
         c.idtDescription = d.idt;
         c.inFrustumDescription = d.inFrustum;

@@ -96,7 +96,7 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
 
     const bool nonLinear =
         std::all_of(o.balances.begin(), o.balances.end(),
-                    [](const WallConfigBalance& b) { return bool(b.postNonLinear); });
+                    [](const WallConfigBalance& b) { return b.postNonLinear != nullptr; });
     const Eigen::Index n = o.balances.front().inFrustum.rows();
     const bool drives = n == 3 || n == 4;
     const bool alpha = n == 4;
@@ -108,16 +108,16 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
                                       Described(MakeMatrixTransform(b.post), b.postDescription));
         if (nonLinear)
         {
-            // As the config's other non-linear looks are baked: the log2
-            // shaper of non-linear methods aligned to the lattice, which keeps
-            // grey on the lattice's diagonal and holds HDR plates.
-            const ShaperSpec shaper = ShaperSpec::ForNonLinear().alignedTo(o.lutSize);
-            OCIO::GroupTransformRcPtr lattice =
-                LatticeTransform(b.postNonLinear, shaper, o.lutSize);
-            package.lutFiles.emplace_back(
-                WallFile(b.key, "post_camera_rootpoly", false),
-                Described(lattice, b.postNonLinearDescription + " " + std::to_string(o.lutSize) +
-                                       "^3 LUT, shaper " + shaper.describe() + "."));
+            OCIO::TransformRcPtr look = b.postNonLinear->createEditableCopy();
+            OCIO::GroupTransformRcPtr g = OCIO::DynamicPtrCast<OCIO::GroupTransform>(look);
+            if (!g)
+            {
+                g = OCIO::GroupTransform::Create();
+                g->appendTransform(look);
+            }
+            g->getFormatMetadata().addChildElement(OCIO::METADATA_DESCRIPTION,
+                                                   b.postNonLinearDescription.c_str());
+            package.lutFiles.emplace_back(WallFile(b.key, "post_camera_rootpoly", false), g);
         }
         if (drives)
         {
@@ -186,8 +186,8 @@ ConfigPackage BuildWallConfig(const WallConfigOptions& o)
         rootpoly->setTransform(File(WallFileTemplate(o.variable, "post_camera_rootpoly", false)));
         rootpoly->setDescription(
             ("The same correction as " + std::string(kWallPostLook) +
-             " by a degree-2 root polynomial (lower error on the training set; a 3D LUT with a "
-             "shaper), for the camera white balance " +
+             " by the method registry's rootpoly-plate op (a degree-2 root polynomial, lower "
+             "error on the training set; a 3D LUT with a shaper), for the camera white balance " +
              var + " names.")
                 .c_str());
         config.addLook(rootpoly);

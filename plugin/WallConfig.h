@@ -11,7 +11,6 @@
 
 #include <Eigen/Core>
 
-#include "luts/LutWriter.h"
 #include "plugin/ConfigBuilder.h"
 
 namespace bandlight
@@ -30,10 +29,10 @@ struct WallConfigBalance
     Eigen::MatrixXd preCorrection;
     /// Working RGB → working RGB.
     Mat3 post = Mat3::Identity();
-    /// The same correction as a non-linear op (the wall's root polynomial),
-    /// on working RGB float triples in place; baked as shaper + 3D LUT.
-    /// Empty: no such look.
-    PixelFunction postNonLinear;
+    /// The same correction's non-linear form as its op gives it in OCIO
+    /// (IlluminantChangeTransform: shaper, 3D LUT, inverse shaper), its
+    /// description added. Null: no such look.
+    OCIO::ConstTransformRcPtr postNonLinear;
     /// What each file says it was made from.
     std::string idtDescription;
     std::string inFrustumDescription;
@@ -50,8 +49,6 @@ struct WallConfigOptions
     std::string variable;                     ///< the context variable: WALL_WB
     std::vector<WallConfigBalance> balances;  ///< the first is the variable's default
     std::string description;
-    /// Lattice points per axis of the non-linear post-camera look's 3D LUT.
-    int lutSize = defaults::CONFIG_LUT_SIZE;
 };
 
 /// The names of the config's colour spaces and look.
@@ -77,7 +74,7 @@ std::string WallFileTemplate(const std::string& variable, const std::string& nam
 /// - kWallLightingSpace (N ≤ 4): the same, then the lighting pre-correction;
 /// - the look kWallPostLook in the working space: the post-camera correction;
 /// - the look kWallPostRootPolyLook (when every balance has postNonLinear):
-///   the same correction as its non-linear form, shaper + 3D LUT.
+///   the same correction's non-linear form.
 /// Every transform is also a file of the package (the FileTransforms' targets).
 /// Built with the Config API and validated.
 ConfigPackage BuildWallConfig(const WallConfigOptions& options);

@@ -89,7 +89,9 @@ Json Conventions(const WallResult& r)
         {"post_camera",
          "a 3x3 on the plate (working RGB), fitted for the wall showing the white-balance "
          "light, as the pre-correction is (also started from bandlight's 3x3 for a change of "
-         "light); its degree-2 root polynomial reported beside it"},
+         "light); and its non-linear form, the method registry's rootpoly-plate op (a degree-2 "
+         "root polynomial fitted the same way, from the camera's plates under the wall to its "
+         "plates under the light: lit plates, the white balance's IDT)"},
         {"registry",
          "the method registry's rootpoly-camera op for the same change of light (the wall's "
          "spectrum to the light, the camera set, its IDT the white balance's), fitted to the "
@@ -207,6 +209,7 @@ std::string WallDocument(const WallResult& r)
         w["post_camera"] = FitJson(b.postFit);
         w["post_camera"]["matrix"] = MatrixJson(b.post);
         w["post_camera"]["root_polynomial"] = FitJson(b.postRootPolynomialFit);
+        w["post_camera"]["root_polynomial"]["method"] = b.postMethod.name;
         w["post_camera"]["root_polynomial"]["degree"] = b.postRootPolynomial.degree();
         w["post_camera"]["root_polynomial"]["matrix"] = MatrixJson(b.postRootPolynomial.matrix());
         w["post_camera"]["registry_rootpoly_camera"] = StatsJson(b.postRegistry);
@@ -322,7 +325,8 @@ WallDescriptions DescribeWallBalance(const WallResult& r, const WallBalance& b)
          << " after. " << from.str();
     d.postCamera = post.str();
     std::ostringstream rootpoly;
-    rootpoly << "Post-camera, degree-2 root polynomial: the plate of a scene lit by the wall "
+    rootpoly << "Post-camera, the method registry's " << b.postMethod.name
+             << " op (a degree-2 root polynomial): the plate of a scene lit by the wall "
                 "showing "
              << b.light << " made to look as under " << b.light << ": dE00 mean "
              << Fixed(b.postRootPolynomialFit.before.mean, 2) << " before, "

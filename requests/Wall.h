@@ -13,7 +13,9 @@
 #include "requests/Defaults.h"
 #include "spectral/LightScores.h"
 #include "spectral/Statistics.h"
+#include "transforms/De00Fit.h"
 #include "transforms/Idt.h"
+#include "transforms/Methods.h"
 
 namespace bandlight::jobs
 {
@@ -90,17 +92,10 @@ struct WallInFrustum
 };
 
 /// A correction's ΔE00 over the data it was fitted on, against the plain
-/// least-squares fit of the same form on the same data.
-struct WallFitFigures
-{
-    /// Which fit the correction is: "ciede2000" (bandlight's: iteratively
-    /// reweighted least squares on CIEDE2000 to first order) or
-    /// "least-squares" (when nothing beats the plain fit on the data).
-    std::string fit;
-    Statistics before;
-    Statistics after;
-    Statistics leastSquares;
-};
+/// least-squares fit of the same form on the same data (`fit`: "ciede2000",
+/// bandlight's reweighted fit, or "least-squares" when nothing beats the
+/// plain fit there).
+using WallFitFigures = De00FitFigures;
 
 /// The out-of-frustum errors on one set of remittances under the wall
 /// showing one light.
@@ -142,7 +137,15 @@ struct WallBalance
     WallFitFigures preFit;
     Mat3 post = Mat3::Identity();  ///< the post-camera look (working RGB)
     WallFitFigures postFit;
-    RootPolynomial postRootPolynomial;  ///< its degree-2 root-polynomial form
+    /// Its non-linear form: the method registry's op `postMethod`
+    /// (rootpoly-plate, lit plates through this white balance's IDT) from
+    /// `postFrom` (the wall showing the light, its spectrum) to `postTo`
+    /// (the light); the op's root polynomial, and its figures on the
+    /// training plates.
+    Light postFrom;
+    Light postTo;
+    MethodSpec postMethod;
+    RootPolynomial postRootPolynomial;
     WallFitFigures postRootPolynomialFit;
     /// The method registry's rootpoly-camera op for the same change of
     /// light on the same plates (RegistryPostErrors), training set.

@@ -11,6 +11,7 @@
 // method's enum or name.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,7 +71,8 @@ enum class DirectForm
 /// appended for the white-preserving form: no ':' or '=' so it can name
 /// looks), "fit3x3", "prefilter", "metamer", "upsample", "rootpoly"
 /// (degree 2), "rootpoly3" (degree 3), "rootpoly-camera" /
-/// "rootpoly3-camera" (need `camera`), "spectral".
+/// "rootpoly3-camera", "rootpoly-plate" / "rootpoly3-plate" (need
+/// `camera`), "spectral".
 struct MethodSpec
 {
     ChangeMethod method = ChangeMethod::NONE;
@@ -96,6 +98,10 @@ struct MethodSpec
     std::shared_ptr<const SpectralCamera> camera;
     std::string idtLightName = DEFAULT_IDT_LIGHT;
     Spectrum idtLight;
+    /// Camera methods: that IDT itself (balanced camera RGB → working RGB)
+    /// when the plates were read through another than bandlight's fit for
+    /// the light (FitIdt): a vendor's, or `idt`'s optimum. Empty: FitIdt.
+    std::optional<Mat3> idt;
 
     /// This method's registry entry.
     const MethodEntry& entry() const;

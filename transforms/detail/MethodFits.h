@@ -49,6 +49,11 @@ std::unique_ptr<PixelOp> UpsampleOp(const Light& from, const Light& to, const Me
 /// upsample's fits under `from`, which every op from that light shares.
 std::shared_ptr<void> UpsampleShared(const Light& from, const RgbSpace& working,
                                      Observer observer);
+/// The op of a root polynomial M · φ(x) of `degree` (the SIMD kernel's),
+/// after the 3×3 `input` when given: the root-polynomial methods' op, for
+/// the files of transforms/methods/ that fit one their own way.
+std::unique_ptr<PixelOp> RootPolynomialOp(int degree, Eigen::MatrixXd matrix,
+                                          const Mat3* input = nullptr);
 /// rootpoly, rootpoly3: the root polynomial fitted on the training set
 /// (transforms/methods/RootPolynomial.cpp).
 std::unique_ptr<PixelOp> RootPolyOp(const Light& from, const Light& to, const MethodSpec& method,

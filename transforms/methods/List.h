@@ -8,4 +8,5 @@
 // reference). No include guard: it is a list, not a header.
 #ifdef BANDLIGHT_METHOD
 BANDLIGHT_METHOD(HUE_PLANE, HuePlaneMethod)
+BANDLIGHT_METHOD(ROOTPOLY_PLATE, RootPolyPlateMethod)
 #endif

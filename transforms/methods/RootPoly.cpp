@@ -73,6 +73,12 @@ private:
 namespace detail
 {
 
+std::unique_ptr<PixelOp> RootPolynomialOp(int degree, Eigen::MatrixXd matrix, const Mat3* input)
+{
+    return std::make_unique<RootPoly>(degree, std::move(matrix), input != nullptr,
+                                      input ? *input : Mat3::Identity());
+}
+
 std::unique_ptr<PixelOp> RootPolyOp(const Light& from, const Light& to, const MethodSpec& method,
                                     const RgbSpace& working, Observer observer)
 {
@@ -101,7 +107,8 @@ std::unique_ptr<PixelOp> RootPolyCameraOp(const Light& from, const Light& to,
     const Spectrum daylight =
         method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
     const SpectralCamera& camera = *method.camera;
-    const Mat3 idtDaylight = FitIdt(camera, daylight, working, adaptation, observer);
+    const Mat3 idtDaylight =
+        method.idt ? *method.idt : FitIdt(camera, daylight, working, adaptation, observer);
     const Mat3 cameraLit = BalanceMatrix(from.spectrum, working, adaptation, observer).inverse() *
                            FitIdt(camera, from.spectrum, working, adaptation, observer);
     const CameraShot shot(camera, from.spectrum);
