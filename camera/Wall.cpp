@@ -8,7 +8,6 @@
 #include <vector>
 
 #include <Eigen/LU>
-#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "plugin/ConfigBuilder.h"
@@ -111,136 +110,70 @@ std::string MostCollinear(const Eigen::Matrix3Xd& unit, const std::vector<std::s
 /// A drive "exact" to this relative residual over the content cube's corners.
 constexpr double kExactDriveResidual = 1e-9;
 
-/// Lawson & Hanson's NNLS (Solving Least Squares Problems, 1974, ch. 23):
-/// the x ≥ 0 minimising |A x − b|, for A of full column rank (so unique).
-Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b)
-{
-    const Eigen::Index n = a.cols();
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-    std::vector<bool> passive(size_t(n), false);
-    const double tol = 1e-13 * std::max(1.0, (a.transpose() * b).cwiseAbs().maxCoeff());
-    // The least-squares solution on the passive set, zero elsewhere.
-    const auto solveOnPassive = [&]
-    {
-        std::vector<Eigen::Index> p;
-        for (Eigen::Index j = 0; j < n; ++j)
-        {
-            if (passive[size_t(j)])
-            {
-                p.push_back(j);
-            }
-        }
-        Eigen::MatrixXd ap(a.rows(), Eigen::Index(p.size()));
-        for (size_t k = 0; k < p.size(); ++k)
-        {
-            ap.col(Eigen::Index(k)) = a.col(p[k]);
-        }
-        const Eigen::VectorXd sp = ap.householderQr().solve(b);
-        Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-        for (size_t k = 0; k < p.size(); ++k)
-        {
-            z(p[k]) = sp(Eigen::Index(k));
-        }
-        return z;
-    };
-    // Each outer step frees one variable; each inner step binds at least
-    // one: the method ends in finitely many steps, 3n is ample.
-    for (int outer = 0; outer < 3 * int(n) + 3; ++outer)
-    {
-        const Eigen::VectorXd w = a.transpose() * (b - a * x);
-        Eigen::Index best = -1;
-        for (Eigen::Index j = 0; j < n; ++j)
-        {
-            if (!passive[size_t(j)] && w(j) > tol && (best < 0 || w(j) > w(best)))
-            {
-                best = j;
-            }
-        }
-        if (best < 0)
-        {
-            break;
-        }
-        passive[size_t(best)] = true;
-        for (int inner = 0; inner <= int(n); ++inner)
-        {
-            const Eigen::VectorXd z = solveOnPassive();
-            double alpha = 1.0;
-            for (Eigen::Index j = 0; j < n; ++j)
-            {
-                if (passive[size_t(j)] && z(j) <= 0.0)
-                {
-                    alpha = std::min(alpha, x(j) / (x(j) - z(j)));
-                }
-            }
-            if (alpha >= 1.0)
-            {
-                x = z;
-                break;
-            }
-            x += alpha * (z - x);
-            for (Eigen::Index j = 0; j < n; ++j)
-            {
-                if (passive[size_t(j)] && x(j) <= 1e-15 * x.cwiseAbs().maxCoeff())
-                {
-                    passive[size_t(j)] = false;
-                    x(j) = 0.0;
-                }
-            }
-        }
-    }
-    return x;
-}
-
 /// For more than three emitters: per content primary (a column of
-/// `target`), the non-negative drive the camera records closest to it, and
-/// among equally close ones the least (Euclidean) drive — the NNLS of the
-/// response stacked on √ε·I, ε = 1e-12 of its largest squared singular
-/// value: a drive matrix D ≥ 0 drives every colour of the content cube
-/// non-negatively, since the drive is linear in the content.
+/// `target`), the non-negative drive whose record is closest to it, and
+/// among equally close ones the least (Euclidean) drive; D ≥ 0 then drives
+/// every colour of the content cube non-negatively, since the drive is
+/// linear in the content. Found exactly: by the Karush–Kuhn–Tucker
+/// conditions the optimum drives some set S of emitters and is there the
+/// least-squares, least-norm drive of those emitters alone, so every set's
+/// is computed (its pseudo-inverse through the SVD) and the best
+/// non-negative one kept — 2^N − 1 small solves, which bounds N
+/// (defaults::WALL_MAX_EMITTERS). Closeness and size are compared
+/// relative to the target, so the emitter files' units change nothing.
 Eigen::MatrixXd NonNegativeDrive(const Eigen::Matrix3Xd& response, const Mat3& target)
 {
     const Eigen::Index n = response.cols();
-    const double sigma = Eigen::JacobiSVD<Eigen::Matrix3Xd>(response).singularValues()(0);
-    Eigen::MatrixXd a(3 + n, n);
-    a.topRows(3) = response;
-    a.bottomRows(n) = Eigen::MatrixXd::Identity(n, n) * (1e-6 * sigma);
-    Eigen::MatrixXd d(n, 3);
+    Eigen::MatrixXd d = Eigen::MatrixXd::Zero(n, 3);
     for (int c = 0; c < 3; ++c)
     {
-        Eigen::VectorXd b = Eigen::VectorXd::Zero(3 + n);
-        b.head<3>() = target.col(c);
-        Eigen::VectorXd x = NonNegativeLeastSquares(a, b);
-        // The regulariser's bias removed: on the emitters it drives, the
-        // minimum-norm least-squares drive (the lexicographic optimum's form
-        // on its support), kept when it stays non-negative and no worse.
-        std::vector<Eigen::Index> support;
-        for (Eigen::Index j = 0; j < n; ++j)
+        const Vec3 t = target.col(c);
+        const double scale = t.norm();
+        if (!(scale > 0.0))
         {
-            if (x(j) > 0.0)
+            continue;  // black: no drive
+        }
+        double bestResidual = INFINITY;
+        double bestNorm = INFINITY;
+        for (unsigned long set = 1; set < (1ul << n); ++set)
+        {
+            std::vector<Eigen::Index> members;
+            for (Eigen::Index j = 0; j < n; ++j)
             {
-                support.push_back(j);
+                if (set & (1ul << j))
+                {
+                    members.push_back(j);
+                }
+            }
+            Eigen::Matrix3Xd rs(3, Eigen::Index(members.size()));
+            for (size_t k = 0; k < members.size(); ++k)
+            {
+                rs.col(Eigen::Index(k)) = response.col(members[k]);
+            }
+            const Eigen::VectorXd y =
+                Eigen::JacobiSVD<Eigen::Matrix3Xd>(rs, Eigen::ComputeThinU | Eigen::ComputeThinV)
+                    .solve(t);
+            if (!((y.array() >= -1e-12 * y.cwiseAbs().maxCoeff()).all()))
+            {
+                continue;  // asks an emitter of the set for less than nothing
+            }
+            const Eigen::VectorXd drive = y.cwiseMax(0.0);
+            const double residual = (rs * drive - t).norm() / scale;
+            const double norm = drive.norm();
+            // Closer by more than rounding; or as close, and smaller.
+            const bool closer = residual < bestResidual - 1e-12;
+            const bool asClose = std::abs(residual - bestResidual) <= 1e-12;
+            if (closer || (asClose && norm < bestNorm))
+            {
+                bestResidual = residual;
+                bestNorm = norm;
+                d.col(c).setZero();
+                for (size_t k = 0; k < members.size(); ++k)
+                {
+                    d(members[k], c) = drive(Eigen::Index(k));
+                }
             }
         }
-        Eigen::MatrixXd rs(3, Eigen::Index(support.size()));
-        for (size_t k = 0; k < support.size(); ++k)
-        {
-            rs.col(Eigen::Index(k)) = response.col(support[k]);
-        }
-        const Eigen::VectorXd polished =
-            rs.completeOrthogonalDecomposition().solve(Vec3(target.col(c)));
-        if (!support.empty() && (polished.array() >= 0.0).all())
-        {
-            Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
-            for (size_t k = 0; k < support.size(); ++k)
-            {
-                y(support[k]) = polished(Eigen::Index(k));
-            }
-            if ((response * y - target.col(c)).norm() <= (response * x - target.col(c)).norm())
-            {
-                x = y;
-            }
-        }
-        d.col(c) = x;
     }
     return d;
 }
@@ -308,9 +241,9 @@ WallInFrustum SolveInFrustum(const Eigen::Matrix3Xd& response, const Mat3& conte
         f.residual = std::max(f.residual, (got - want).norm() / want.norm());
         f.corners.push_back(std::move(corner));
     }
-    f.solution = n == 3                                ? "exact"
+    f.solution = n == 3                              ? "exact"
                  : f.residual <= kExactDriveResidual ? "non-negative minimum-norm"
-                                                       : "non-negative least-squares";
+                                                     : "non-negative least-squares";
     return f;
 }
 

@@ -3,16 +3,11 @@
 // the light it shows, and the two corrections of them (the lighting
 // content's drive, the plate), each beside the plain least-squares fit of
 // its own form on the same data.
-#include <algorithm>
-#include <cmath>
-
 #include <memory>
 
 #include <Eigen/LU>
-#include <Eigen/QR>
 
 #include "camera/Wall.h"
-#include "spectral/Metrics.h"
 #include "transforms/De00Fit.h"
 #include "transforms/IlluminantChange.h"
 #include "transforms/Plates.h"
@@ -23,26 +18,6 @@ namespace bandlight::jobs
 
 namespace
 {
-
-/// ΔE00 (the registry's "de00") of a colour against its target, L*a*b*
-/// relative to `whiteXyz`.
-class De00
-{
-public:
-    De00(const Mat3& rgbToXyz, const Vec3& whiteXyz) : m_metric(FindMetric("de00"))
-    {
-        m_context.rgbToXyz = rgbToXyz;
-        m_context.whiteXyz = whiteXyz;
-    }
-    double operator()(const Vec3& rgb, const Vec3& reference) const
-    {
-        return m_metric.compute(rgb, reference, m_context);
-    }
-
-private:
-    const MetricEntry& m_metric;
-    MetricContext m_context;
-};
 
 /// The post-camera data: plates under the wall → plates under the light,
 /// L*a*b* relative to the light's white.
@@ -71,7 +46,7 @@ Statistics WallErrors(const WallSetting& s, const Eigen::VectorXd& drive, const 
 {
     const Eigen::Matrix3Xd got = s.camera.plates(s.emitters * drive, set);
     const Eigen::Matrix3Xd want = s.camera.plates(scene.real, set);
-    const De00 de(s.camera.rgbToXyz(), s.camera.rgbToXyz() * s.camera.plate(scene.real));
+    const De00Distance de(s.camera.rgbToXyz(), s.camera.rgbToXyz() * s.camera.plate(scene.real));
     std::vector<double> v;
     for (Eigen::Index i = 0; i < set.cols(); ++i)
     {

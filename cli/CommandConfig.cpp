@@ -110,8 +110,8 @@ void AddConfigCommand(CLI::App& app)
         "--methods", o->methods,
         "Comma-separated methods (default: " + JoinNames(LinearMethodNames()) +
             "; also bandN, bandN-wp, bandsE0-E1-...-En[-wp], fit3x3, prefilter, metamer, and "
-            "the non-linear upsample, rootpoly, rootpoly3 as 3D LUT files, and rootpoly-camera "
-            "with --camera)");
+            "the non-linear upsample, rootpoly, rootpoly3, hueplane as 3D LUT files, and "
+            "rootpoly-camera, rootpoly-plate with --camera)");
     AddObserverOption(*cmd, r.observer);
     AddPlatesOptions(*cmd, r.plates);
     cmd->callback([o, cmd] { RunConfig(*o, *cmd); });

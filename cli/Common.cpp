@@ -131,13 +131,22 @@ void AddPlatesOptions(CLI::App& app, jobs::PlatesRequest& o, bool allowBoth)
                    "Chromatic adaptation the balanced plates were balanced with: " +
                        PlateAdaptationChoices() + " (cat02 as rawtoaces)")
         ->capture_default_str();
-    app.add_option(
-        "--camera", o.camera,
-        "The camera's spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
-        "columns): enables rootpoly-camera, and accuracy simulates that camera's plates");
+    // The methods that need a camera, as the registry names them.
+    std::string cameraMethods;
+    for (const MethodEntry& e : Methods())
+    {
+        if (e.needsCamera)
+        {
+            cameraMethods += (cameraMethods.empty() ? "" : ", ") + std::string(e.syntax);
+        }
+    }
+    app.add_option("--camera", o.camera,
+                   "The camera's spectral sensitivities (rawtoaces JSON, or CSV/CGATS with R, G, B "
+                   "columns): enables " +
+                       cameraMethods + ", and accuracy simulates that camera's plates");
     app.add_option("--camera-idt", o.idtLight,
-                   "The light the camera's one fixed IDT was fitted for (rootpoly-camera's "
-                   "plates: that IDT plus white-balance gains)")
+                   "The light the camera's one fixed IDT was fitted for (the plates of " +
+                       cameraMethods + ": that IDT plus white-balance gains)")
         ->capture_default_str();
 }
 

@@ -168,6 +168,13 @@ void CheckWallRequest(const WallRequest& r)
                              ": give {emitter=}NAME=FILE for "
                              "each (R, G, B, ...)");
     }
+    if (r.emitters.size() > defaults::WALL_MAX_EMITTERS)
+    {
+        throw ParameterError("a wall of " + std::to_string(r.emitters.size()) +
+                             " emitters is more than bandlight solves (at most " +
+                             std::to_string(defaults::WALL_MAX_EMITTERS) +
+                             "): give {emitter=}NAME=FILE for each drive channel of the wall");
+    }
     for (size_t i = 0; i < r.emitters.size(); ++i)
     {
         const WallEmitterSpec& e = r.emitters[i];

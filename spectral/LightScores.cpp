@@ -193,7 +193,8 @@ const std::vector<LightScoreEntry> kScores = {
     {"ssi", "SSI", "Spectral similarity index", "Academy S-2018-001 (SMPTE ST 2122)",
      "How closely the spectrum follows a reference's over 375-675 nm in 10 nm bins, weighted "
      "and smoothed, 100 for proportional spectra; camera-agnostic. The reference: Planckian "
-     "below 4000 K, CIE daylight from 4000 K, at the light's CCT, or --reference.",
+     "up to 4000 K, CIE daylight from 5000 K, blended between as CIE 224 blends, at the "
+     "light's CCT, or --reference.",
      "value=SSI:0", false, false, SsiScore},
     {"tlci", "TLCI", "Television lighting consistency index", "EBU Tech 3355 (TLCI-2012)",
      "Qa = 100 / (1 + (ΔEa / 3.16)^2.4): ΔE00 of the 18 coloured ColorChecker patches seen by "

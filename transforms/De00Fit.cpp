@@ -6,7 +6,6 @@
 #include <utility>
 
 #include <Eigen/QR>
-#include <Eigen/SVD>
 
 #include "spectral/Metrics.h"
 
@@ -16,31 +15,23 @@ namespace bandlight
 namespace
 {
 
-/// ΔE00 (the registry's "de00") of a colour against its target, L*a*b*
-/// relative to `whiteXyz`.
-class De00
-{
-public:
-    De00(const Mat3& rgbToXyz, const Vec3& whiteXyz) : m_metric(FindMetric("de00"))
-    {
-        m_context.rgbToXyz = rgbToXyz;
-        m_context.whiteXyz = whiteXyz;
-    }
-    double operator()(const Vec3& rgb, const Vec3& reference) const
-    {
-        return m_metric.compute(rgb, reference, m_context);
-    }
-
-private:
-    const MetricEntry& m_metric;
-    MetricContext m_context;
-};
-
 /// How many reweightings the CIELAB fit takes at most: the mean error
 /// settles within a few (the best iterate is kept).
 constexpr int kReweightings = 12;
 
 }  // namespace
+
+De00Distance::De00Distance(const Mat3& rgbToXyz, const Vec3& whiteXyz)
+    : m_metric(FindMetric("de00"))
+{
+    m_context.rgbToXyz = rgbToXyz;
+    m_context.whiteXyz = whiteXyz;
+}
+
+double De00Distance::operator()(const Vec3& rgb, const Vec3& reference) const
+{
+    return m_metric.compute(rgb, reference, m_context);
+}
 
 Mat3 De00Jacobian(const Vec3& lab)
 {
@@ -98,18 +89,21 @@ Eigen::VectorXd De00Model::solve(const std::vector<double>& weight, bool percept
     // normal equations, so as well conditioned as the unconstrained
     // solve): θ = θ0 + N z with θ0 the least-norm solution of the
     // constraints and N a basis of C's null space, z by least squares.
-    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> c(constraints);
-    const Eigen::VectorXd theta0 = c.solve(constraintValues);
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(constraints, Eigen::ComputeFullV);
-    const Eigen::Index rank = svd.rank();
-    const Eigen::MatrixXd n = svd.matrixV().rightCols(parameters - rank);
+    // Cᵀ = Q R (column pivoting): Q's first `rank` columns span C's rows,
+    // the rest its null space.
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(constraints.transpose());
+    const Eigen::Index rank = qr.rank();
+    const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(parameters, parameters);
+    const Eigen::MatrixXd n = q.rightCols(parameters - rank);
+    const Eigen::VectorXd theta0 =
+        constraints.completeOrthogonalDecomposition().solve(constraintValues);
     const Eigen::VectorXd z = (m * n).completeOrthogonalDecomposition().solve(rhs - m * theta0);
     return theta0 + n * z;
 }
 
 std::vector<double> De00Model::values(const Eigen::VectorXd& theta) const
 {
-    std::vector<De00> de;
+    std::vector<De00Distance> de;
     for (const Vec3& w : whites)
     {
         de.emplace_back(toXyz, w);
@@ -224,7 +218,7 @@ RootPolynomial FitRootPolynomialDe00(const ColourFit& data, int degree, De00FitF
     const RootPolynomial start = FitRootPolynomial(data, degree);
     const Eigen::VectorXd theta = FitDe00(m, {RowsOf(start.matrix())}, f);
     // θ = 0 is no map at all: "before" is the inputs as they are.
-    const De00 de(data.rgbToXyz, data.labWhite);
+    const De00Distance de(data.rgbToXyz, data.labWhite);
     std::vector<double> before;
     for (size_t i = 0; i < data.input.size(); ++i)
     {

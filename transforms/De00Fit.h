@@ -15,11 +15,25 @@
 #include <Eigen/Core>
 
 #include "spectral/Colorimetry.h"
+#include "spectral/Metrics.h"
 #include "spectral/Statistics.h"
 #include "transforms/RootPolynomial.h"
 
 namespace bandlight
 {
+
+/// ΔE00 (the metric registry's "de00") of an RGB colour against its target,
+/// L*a*b* relative to `whiteXyz`.
+class De00Distance
+{
+public:
+    De00Distance(const Mat3& rgbToXyz, const Vec3& whiteXyz);
+    double operator()(const Vec3& rgb, const Vec3& reference) const;
+
+private:
+    const MetricEntry& m_metric;
+    MetricContext m_context;
+};
 
 /// A fit's ΔE00 on the data it was fitted on, against the plain
 /// least-squares fit of the same form on the same data.
@@ -71,7 +85,8 @@ struct De00Model
 
 /// The θ of least mean ΔE00 found from the plain least-squares fit and each
 /// of `starts` by reweighting (see above); `figures` gets the error with
-/// θ = 0, the plain fit's and the chosen one's.
+/// θ = 0, the plain fit's and the chosen one's. The starts must keep the
+/// model's constraints (a start is a candidate as it is).
 Eigen::VectorXd FitDe00(const De00Model& m, const std::vector<Eigen::VectorXd>& starts,
                         De00FitFigures& figures);
 
@@ -85,7 +100,7 @@ De00Model RootPolynomialModel(const ColourFit& data, int degree, bool keepWhite 
 Eigen::VectorXd RowsOf(const Eigen::MatrixXd& m);
 Eigen::MatrixXd FromRows(const Eigen::VectorXd& v, Eigen::Index cols);
 
-/// The root polynomial of `degree` of least mean ΔE00 on `data` among those
+/// The root polynomial of `degree` (2 or 3) of least mean ΔE00 on `data` among those
 /// that map data.whiteIn exactly onto data.whiteOut (FitDe00 on the
 /// constrained model, started also from FitRootPolynomial's first-order
 /// CIELAB fit); `figures` (when given) gets the fit's figures — its

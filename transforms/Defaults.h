@@ -8,6 +8,8 @@
 // (python/) all take their defaults from these two files, so the three faces
 // cannot drift apart; tests/python/test_defaults.py holds Python to them.
 
+#include <cstddef>
+
 #include "transforms/Version.h"
 
 namespace bandlight::defaults
@@ -44,6 +46,10 @@ inline constexpr const char* WALL_CONTEXT_VARIABLE = "WALL_WB";
 /// or sensitivities. RGB and RGBW walls of distinct LEDs lie near 2–3; two
 /// greens 2 nm apart beside a red reach 185.
 inline constexpr double WALL_MAX_CONDITION = 100.0;
+/// `wall`: the most emitters a wall may have. The in-frustum drive of more
+/// than three is found by trying every set of emitters (2^N − 1 small
+/// solves a content primary: 0.2 s at 16); fixtures and walls have 3–7.
+inline constexpr size_t WALL_MAX_EMITTERS = 16;
 /// `wall`: the lights the wall's content depicts when its lighting
 /// pre-correction is fitted, beside the white-balance lights: Planckian
 /// below 4000 K, CIE daylight from 4000 K (IdtLightForCct), 2800–10000 K.

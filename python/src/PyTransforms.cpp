@@ -274,7 +274,8 @@ Raises ValueError for an unknown method (the message lists them), for
         py::arg("training") = py::none(), py::arg("plates") = defaults::PLATES,
         py::arg("adaptation") = defaults::ADAPTATION, R"doc(
 The 3x3 in working_space that makes an image lit by src look lit by dst, for
-the linear methods (every method but upsample, rootpoly, rootpoly-camera and
+the linear methods (every method but the non-linear ones: upsample, hueplane,
+rootpoly, rootpoly-camera, rootpoly-plate and their degree-3 forms; and
 spectral). plates, adaptation: as illuminant_change (default balanced by
 CAT02: balance(dst) . M . balance(src)^-1; "lit" gives M itself).
 )doc");

@@ -198,6 +198,14 @@ TEST_CASE("wall: fewer than three emitters, a name given twice, NAME=FILE malfor
                  "--emitter is NAME=FILE");
     CheckOneLine(Bandlight("wall " + Rgb(dir) + Rest(dir + "/out") + " --white-balance 5600k"),
                  "the white balance '5600k' is given twice");
+    std::string seventeen = "wall --emitter";
+    for (int k = 0; k < 17; ++k)
+    {
+        seventeen += " 'E" + std::to_string(k) + "=" + Emitter(dir, "e" + std::to_string(k),
+                                                                400 + 20 * k, 20) + "'";
+    }
+    CheckOneLine(Bandlight(seventeen + Rest(dir + "/out")),
+                 "a wall of 17 emitters is more than bandlight solves (at most 16)");
     CHECK(!fs::exists(dir + "/out"));
 }
 

@@ -183,11 +183,17 @@ def wall_figures(tools, work):
             for shown in b["out_of_frustum"]:
                 if shown["shows"] != b["light"]:
                     continue
+                # A drive with a channel below zero is no light a wall can
+                # emit: its column is marked.
+                def mark(drive):
+                    scale = max(abs(v) for v in drive)
+                    return " (negative drive)" if any(v < -1e-9 * scale for v in drive) else ""
+                plain = mark(shown["drive"])
+                pre = mark(shown["pre_corrected_drive"])
                 for name, e in shown["errors"].items():
-                    lines.append(f"| {wall} | {b['key']}"
-                                 + (" (negative drive)" if shown["negative_drive"] else "")
-                                 + f" | {name} | {stat(e['before'])} | "
-                                 f"{stat(e['pre_corrected'])} | {stat(e['post_corrected'])} |")
+                    lines.append(f"| {wall} | {b['key']} | {name} | {stat(e['before'])}{plain} | "
+                                 f"{stat(e['pre_corrected'])}{pre} | "
+                                 f"{stat(e['post_corrected'])}{plain} |")
     lines += ["",
               "The corrections against the plain least-squares fit of their form, mean ΔE00 "
               "on the data they were fitted on:",

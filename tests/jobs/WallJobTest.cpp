@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "camera/Wall.h"
 #include "jobs/JobsTestSupport.h"
 #include "jobs/WallJob.h"
 #include "plugin/ConfigBuilder.h"
@@ -185,6 +186,40 @@ void CheckOutOfFrustum(const jobs::WallResult& result)
     }
 }
 
+/// The drive of four emitters is the least of the non-negative exact
+/// drives, found here on its own terms: the exact drives of a content
+/// primary are d + z·v (v spanning the response's null space),
+/// non-negative on an interval of z; the smallest |d + z·v| there is the
+/// unconstrained minimiser clamped to the interval, which must be z = 0.
+void CheckLeastNonNegative(const Eigen::Matrix3Xd& response, const Eigen::MatrixXd& drive)
+{
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(response);
+    const Eigen::MatrixXd kernel = lu.kernel();
+    REQUIRE(kernel.cols() == 1);
+    const Eigen::VectorXd v = kernel.col(0);
+    for (int k = 0; k < 3; ++k)
+    {
+        INFO("content primary " << k);
+        const Eigen::VectorXd d = drive.col(k);
+        double lo = -INFINITY;
+        double hi = INFINITY;
+        for (int j = 0; j < 4; ++j)
+        {
+            if (v(j) > 0.0)
+            {
+                lo = std::max(lo, -d(j) / v(j));
+            }
+            else if (v(j) < 0.0)
+            {
+                hi = std::min(hi, -d(j) / v(j));
+            }
+        }
+        REQUIRE(lo <= hi + 1e-12);
+        const double z = std::clamp(-d.dot(v) / v.dot(v), lo, hi);
+        CHECK(std::abs(z) * v.norm() < 1e-9 * d.norm());
+    }
+}
+
 }  // namespace
 
 TEST_CASE("wall: an RGB wall's in-frustum drive makes the camera record the content exactly",
@@ -246,36 +281,7 @@ TEST_CASE("wall: an RGBW wall gets the least non-negative exact drive, its fourt
         // can emit (the drive is linear in the content).
         CHECK(f.drive.minCoeff() >= 0.0);
         CHECK(f.negativeCorners == 0);
-        // The least of the non-negative exact drives, found here on its own
-        // terms: with four emitters the exact drives of a content primary
-        // are d + z·v (v spanning the response's null space), non-negative
-        // on an interval of z; the smallest |d + z·v| there is the
-        // unconstrained minimiser clamped to the interval.
-        const Eigen::FullPivLU<Eigen::MatrixXd> lu(c);
-        const Eigen::MatrixXd kernel = lu.kernel();
-        REQUIRE(kernel.cols() == 1);
-        const Eigen::VectorXd v = kernel.col(0);
-        for (int k = 0; k < 3; ++k)
-        {
-            INFO("content primary " << k);
-            const Eigen::VectorXd d = f.drive.col(k);
-            double lo = -INFINITY;
-            double hi = INFINITY;
-            for (int j = 0; j < 4; ++j)
-            {
-                if (v(j) > 0.0)
-                {
-                    lo = std::max(lo, -d(j) / v(j));
-                }
-                else if (v(j) < 0.0)
-                {
-                    hi = std::min(hi, -d(j) / v(j));
-                }
-            }
-            REQUIRE(lo <= hi + 1e-12);
-            const double z = std::clamp(-d.dot(v) / v.dot(v), lo, hi);
-            CHECK(std::abs(z) * v.norm() < 1e-9 * d.norm());
-        }
+        CheckLeastNonNegative(c, f.drive);
         // Where the exact equations allow negative drives, the smallest
         // (Moore–Penrose) drive takes one: non-negativity is a real choice.
         const Eigen::MatrixXd pinv = c.transpose() * (c * c.transpose()).inverse() * intended;
@@ -474,6 +480,50 @@ TEST_CASE("wall: more than four emitters are solved and reported, not put in the
     CHECK(j["config"]["drives"].is_null());
     CHECK(j["white_balances"][0]["in_frustum"]["drive_matrix"].size() == 6);
     CheckOutOfFrustum(result);
+}
+
+TEST_CASE("wall: the least non-negative drive, whatever the emitter files' units",
+          "[jobs][wall]")
+{
+    // Four emitters as a camera sees them (balanced RGB per unit drive):
+    // three primaries and a white, and content whose record four positive
+    // drives make, so that the least exact drive may use all four.
+    Eigen::Matrix3Xd r(3, 4);
+    // clang-format off
+    r << 1.0,  0.2, 0.02, 0.6,
+         0.1,  1.0, 0.1,  0.7,
+         0.02, 0.1, 1.0,  0.5;
+    // clang-format on
+    Eigen::MatrixXd d0(4, 3);
+    // clang-format off
+    d0 << 0.5,  0.1, 0.05,
+          0.1,  0.6, 0.1,
+          0.05, 0.1, 0.7,
+          0.3,  0.3, 0.3;
+    // clang-format on
+    const Mat3 record = r * d0;
+    const std::vector<std::string> names = {"R", "G", "B", "W"};
+    const jobs::WallInFrustum f = jobs::SolveInFrustum(r, record, names, "test camera");
+    CHECK(f.solution == "non-negative minimum-norm");
+    CHECK(f.residual < 1e-12);
+    CHECK(f.drive.minCoeff() >= 0.0);
+    CheckLeastNonNegative(r, f.drive);
+    // Here the smallest exact drive is already non-negative (the
+    // Moore–Penrose one): every emitter is driven for every primary.
+    const Eigen::MatrixXd pinv = r.transpose() * (r * r.transpose()).inverse() * record;
+    REQUIRE(pinv.minCoeff() > 0.0);
+    CHECK((f.drive - f.exposure * pinv).norm() < 1e-12 * f.drive.norm());
+    // The emitter files' units change the exposure, nothing else.
+    for (const double k : {1e-3, 1e3})
+    {
+        INFO("emitters scaled by " << k);
+        const jobs::WallInFrustum g = jobs::SolveInFrustum(k * r, k * record, names, "test camera");
+        CHECK(g.solution == f.solution);
+        CHECK((g.drive - f.drive).norm() < 1e-12 * f.drive.norm());
+        const jobs::WallInFrustum h = jobs::SolveInFrustum(k * r, record, names, "test camera");
+        CHECK((h.drive - f.drive).norm() < 1e-12 * f.drive.norm());
+        CHECK(h.exposure == Approx(k * f.exposure).epsilon(1e-12));
+    }
 }
 
 TEST_CASE("wall: content wider than the emitters gets the closest non-negative drive",

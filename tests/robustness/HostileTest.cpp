@@ -121,6 +121,7 @@ TEST_CASE("Names and file names never reach gnuplot as code", "[robustness][host
         WriteText(dir + "/spectrum.csv", Remittance("\"" + p + "\""));
         for (const char* out : {"plot.png", "plot.svg"})
         {
+            std::remove((dir + "/" + out).c_str());  // each run writes its own
             const Result r = plot("spectrum.csv", out);
             CHECK(r.code == 0);
             CHECK(Exists(dir + "/" + out));
@@ -161,7 +162,10 @@ TEST_CASE("Light names and file names never reach gnuplot as code in quality --p
         "a'.system('touch INJECTED').'",
         "a\".system(\"touch INJECTED\").\"",
         "`touch INJECTED`",
+        "x' `touch INJECTED` '",
         "@MACRO' . system('touch INJECTED') . '",
+        "back\\slash\\' . system('touch INJECTED') . '",
+        "quote' ! touch INJECTED '",
         "$DATA' . system('touch INJECTED') . '",
         "EOD",
     };
@@ -173,6 +177,7 @@ TEST_CASE("Light names and file names never reach gnuplot as code in quality --p
         WriteText(dir + "/light.csv", Remittance("\"" + p + "\""));
         for (const char* out : {"q.png", "q.svg"})
         {
+            std::remove((dir + "/" + out).c_str());  // each run writes its own
             const Result r = quality("light.csv D65 --reference light.csv --plot " +
                                      std::string(out));
             CHECK(r.code == 0);

@@ -55,7 +55,9 @@ std::string Describe(const MethodSpec& m)
            " IDT: a root polynomial of degree " + (m.degree == 3 ? "3" : "2") +
            " from the camera's plates under the source light to its plates under the target "
            "(the camera's rendering kept, not the observer's), exact on white, of least mean dE00 "
-           "on 205 measured remittances: not linear, baked into a 3D LUT with a log2 shaper.";
+           "on " +
+           std::to_string(TrainingOf(m).size()) +
+           " measured remittances: not linear, baked into a 3D LUT with a log2 shaper.";
 }
 
 /// The luminance of a light on the renderer's grid: ȳ · light, the light
@@ -82,9 +84,10 @@ public:
                 const Vec3& fixedGains, Observer observer)
         : m_shot(camera, light)
     {
-        m_scale = balanced ? Vec3::Ones()
-                           : Vec3(fixedGains.cwiseQuotient(m_shot.gains()) /
-                                  GridLuminance(light, observer));
+        m_scale =
+            balanced
+                ? Vec3::Ones()
+                : Vec3(fixedGains.cwiseQuotient(m_shot.gains()) / GridLuminance(light, observer));
     }
     Vec3 record(const SurfaceRenderer::Samples& r) const
     {
@@ -105,9 +108,9 @@ std::unique_ptr<PixelOp> MakeOp(const Light& from, const Light& to, const Method
     const SpectralCamera& camera = *method.camera;
     const Spectrum idtLight =
         method.idtLight.empty() ? BuiltinIlluminant(method.idtLightName) : method.idtLight;
-    const Mat3 idt = method.idt ? *method.idt
-                                : FitIdt(camera, idtLight, working, method.plates.adaptation,
-                                         observer);
+    const Mat3 idt = method.idt
+                         ? *method.idt
+                         : FitIdt(camera, idtLight, working, method.plates.adaptation, observer);
     const bool balanced = method.plates.balanced();
     const Vec3 fixedGains = CameraShot(camera, idtLight).gains();
     const PlateCamera under(camera, from.spectrum, balanced, fixedGains, observer);

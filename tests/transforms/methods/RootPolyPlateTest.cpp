@@ -131,9 +131,10 @@ TEST_CASE("rootpoly-plate maps the camera's white exactly and is exposure invari
     }
 }
 
-TEST_CASE("rootpoly-plate fits the camera's own plates: no worse than least squares, better "
-          "than rootpoly-camera there",
-          "[transforms][methods]")
+TEST_CASE(
+    "rootpoly-plate fits the camera's own plates: no worse than least squares, better "
+    "than rootpoly-camera there",
+    "[transforms][methods]")
 {
     const Light idtLight = L("D55");
     const Mat3 idt = FitIdt(*D21(), idtLight.spectrum, Working(), AdaptationMethod::CAT02);
@@ -141,8 +142,7 @@ TEST_CASE("rootpoly-plate fits the camera's own plates: no worse than least squa
     const CameraPlates target(BuiltinIlluminant("D55"), idtLight.spectrum, idt);
     const Vec3 white = target(CameraPlates::Ones());
     const Relighter plate(L("F11"), L("D55"), PlateMethod("rootpoly-plate", idtLight), Working());
-    const Relighter camera(L("F11"), L("D55"), PlateMethod("rootpoly-camera", idtLight),
-                           Working());
+    const Relighter camera(L("F11"), L("D55"), PlateMethod("rootpoly-camera", idtLight), Working());
     // On its training plates (the 205 of rootpoly): the plain least-squares
     // root polynomial of the same plates, and no correction, as De00Fit
     // measures them.
