@@ -10,11 +10,11 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "plugin/ConfigBuilder.h"
-#include "plugin/OcioTransforms.h"
+#include "plugin/Names.h"
 #include "spectral/CieData.h"
 #include "spectral/ColourRendering.h"
 #include "spectral/Exception.h"
+#include "spectral/RgbSpaces.h"
 
 namespace bandlight::jobs
 {

@@ -204,17 +204,6 @@ std::string NamedTransformName(const std::string& lookName)
 
 /// Matrix from linear RGB space `src` to `dst`, adapting the white with
 /// Bradford when the two whites differ (as the ACES and Blender configs do).
-Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst)
-{
-    const Mat3 ms = RgbToXyzMatrix(src.chromaticities);
-    const Mat3 md = RgbToXyzMatrix(dst.chromaticities);
-    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
-    const Vec3 wd = WhiteXyz(dst.chromaticities.wx, dst.chromaticities.wy);
-    const Mat3 cat = (ws - wd).norm() < 1e-9 ? Mat3::Identity()
-                                             : AdaptationMatrix(ws, wd, AdaptationMethod::BRADFORD);
-    return md.inverse() * cat * ms;
-}
-
 /// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded → linear.
 OCIO::TransformRcPtr SrgbDecode()
 {

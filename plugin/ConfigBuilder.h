@@ -9,6 +9,7 @@
 #include "plugin/ConfigInputSpaces.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/AtomicFile.h"
+#include "spectral/RgbSpaces.h"
 #include "transforms/Defaults.h"
 
 namespace bandlight
@@ -119,11 +120,6 @@ void WriteConfigPackage(const ConfigPackage& package, const std::string& dir,
 /// The named transform that carries the same transform as a look:
 /// "relight_<look>" (OCIO does not let the two share a name).
 std::string NamedTransformName(const std::string& lookName);
-
-/// Matrix from linear RGB space `src` to `dst`, the whites adapted with
-/// Bradford when they differ (as the ACES and Blender configs do): what a
-/// bandlight config's colour spaces hold.
-Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst);
 
 /// The sRGB piecewise curve (IEC 61966-2-1) as an OCIO transform, encoded →
 /// linear (alpha unchanged); inverse direction to encode.

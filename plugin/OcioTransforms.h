@@ -6,6 +6,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "plugin/Names.h"
 #include "spectral/Colorimetry.h"
 #include "transforms/Defaults.h"
 #include "transforms/IlluminantChange.h"
@@ -61,13 +62,5 @@ OCIO::GroupTransformRcPtr MaterialTintTransform(const std::vector<double>& remit
 /// The 3×3 an OCIO processor applies, measured by running the basis vectors
 /// through it (used to check configs against the library's matrices).
 Mat3 MeasureMatrix(const OCIO::ConstProcessorRcPtr& processor);
-
-/// "band3-wp_A_to_D65": a look / named-transform name without characters
-/// that hosts' option syntax reserves (anything but letters, digits, '.',
-/// '_' and '-' becomes '_').
-std::string LookName(const std::string& method, const std::string& from, const std::string& to);
-
-/// A name made safe for OCIO and for hosts' option syntax (see LookName).
-std::string SafeName(const std::string& text);
 
 }  // namespace bandlight

@@ -7,6 +7,7 @@
 
 #include <Eigen/LU>
 
+#include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
 
 namespace bandlight
@@ -135,6 +136,17 @@ Mat3 RgbToXyzMatrix(const Chromaticities& c)
     }
     const Vec3 s = p.inverse() * WhiteXyz(c.wx, c.wy);
     return p * s.asDiagonal();
+}
+
+Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst)
+{
+    const Mat3 ms = RgbToXyzMatrix(src.chromaticities);
+    const Mat3 md = RgbToXyzMatrix(dst.chromaticities);
+    const Vec3 ws = WhiteXyz(src.chromaticities.wx, src.chromaticities.wy);
+    const Vec3 wd = WhiteXyz(dst.chromaticities.wx, dst.chromaticities.wy);
+    const Mat3 cat = (ws - wd).norm() < 1e-9 ? Mat3::Identity()
+                                             : AdaptationMatrix(ws, wd, AdaptationMethod::BRADFORD);
+    return md.inverse() * cat * ms;
 }
 
 }  // namespace bandlight

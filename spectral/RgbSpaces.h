@@ -72,4 +72,9 @@ Mat3 RgbToXyzMatrix(const Chromaticities& c);
 /// XYZ (Y = 1) of a chromaticity.
 Vec3 WhiteXyz(double x, double y);
 
+/// Matrix from linear RGB space `src` to `dst`, the whites adapted with
+/// Bradford when they differ (as the ACES and Blender configs do): what a
+/// bandlight config's colour spaces hold.
+Mat3 SpaceToSpace(const RgbSpace& src, const RgbSpace& dst);
+
 }  // namespace bandlight
