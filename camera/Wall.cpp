@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
-#include <Eigen/SVD>
 
 #include "plugin/Names.h"
 #include "spectral/CieData.h"
@@ -110,6 +110,21 @@ std::string MostCollinear(const Eigen::Matrix3Xd& unit, const std::vector<std::s
 /// A drive "exact" to this relative residual over the content cube's corners.
 constexpr double kExactDriveResidual = 1e-9;
 
+/// The Moore–Penrose inverse of a symmetric 3×3 (eigenvalues below 1e-14
+/// of the largest taken as zero): with rsᵀ in front, the least-norm
+/// least-squares solution of rs · y = t for any rank of rs.
+Mat3 PseudoInverse(const Mat3& symmetric)
+{
+    const Eigen::SelfAdjointEigenSolver<Mat3> e(symmetric);
+    const Vec3 lambda = e.eigenvalues();
+    Vec3 inverse = Vec3::Zero();
+    for (int i = 0; i < 3; ++i)
+    {
+        inverse(i) = lambda(i) > 1e-14 * lambda(2) ? 1.0 / lambda(i) : 0.0;
+    }
+    return e.eigenvectors() * inverse.asDiagonal() * e.eigenvectors().transpose();
+}
+
 /// For more than three emitters: per content primary (a column of
 /// `target`), the non-negative drive whose record is closest to it, and
 /// among equally close ones the least (Euclidean) drive; D ≥ 0 then drives
@@ -117,7 +132,7 @@ constexpr double kExactDriveResidual = 1e-9;
 /// linear in the content. Found exactly: by the Karush–Kuhn–Tucker
 /// conditions the optimum drives some set S of emitters and is there the
 /// least-squares, least-norm drive of those emitters alone, so every set's
-/// is computed (its pseudo-inverse through the SVD) and the best
+/// is computed (through the pseudo-inverse of its Gram matrix) and the best
 /// non-negative one kept — 2^N − 1 small solves, which bounds N
 /// (defaults::WALL_MAX_EMITTERS). Closeness and size are compared
 /// relative to the target, so the emitter files' units change nothing.
@@ -150,9 +165,7 @@ Eigen::MatrixXd NonNegativeDrive(const Eigen::Matrix3Xd& response, const Mat3& t
             {
                 rs.col(Eigen::Index(k)) = response.col(members[k]);
             }
-            const Eigen::VectorXd y =
-                Eigen::JacobiSVD<Eigen::Matrix3Xd>(rs, Eigen::ComputeThinU | Eigen::ComputeThinV)
-                    .solve(t);
+            const Eigen::VectorXd y = rs.transpose() * PseudoInverse(rs * rs.transpose()) * t;
             if (!((y.array() >= -1e-12 * y.cwiseAbs().maxCoeff()).all()))
             {
                 continue;  // asks an emitter of the set for less than nothing
@@ -200,9 +213,10 @@ WallInFrustum SolveInFrustum(const Eigen::Matrix3Xd& response, const Mat3& conte
     // The collinearity of the emitters as the camera sees them, whatever
     // their power: a drive solved through a condition number κ turns a
     // relative error ε in the data into up to κ·ε in the drive.
-    const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(unit);
-    const Eigen::Vector3d sigma = svd.singularValues().head<3>();
-    f.condition = sigma(2) > 0.0 ? sigma(0) / sigma(2) : INFINITY;
+    // Singular values: the square roots of the Gram matrix's eigenvalues.
+    const Eigen::SelfAdjointEigenSolver<Mat3> gram(unit * unit.transpose(), Eigen::EigenvaluesOnly);
+    const Vec3 lambda = gram.eigenvalues();  // ascending
+    f.condition = lambda(0) > 0.0 ? std::sqrt(lambda(2) / lambda(0)) : INFINITY;
     if (!(f.condition <= maxCondition))
     {
         char figure[64];
