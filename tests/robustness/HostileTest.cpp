@@ -82,6 +82,24 @@ std::string ShellWord(const std::string& s)
     return out + "'";
 }
 
+/// Strings that would create INJECTED in the working folder if gnuplot (or
+/// a shell) evaluated them where a name belongs.
+const std::vector<std::string>& GnuplotPayloads()
+{
+    static const std::vector<std::string> payloads = {
+        "a'.system('touch INJECTED').'",
+        "a\".system(\"touch INJECTED\").\"",
+        "`touch INJECTED`",
+        "x' `touch INJECTED` '",
+        "@MACRO' . system('touch INJECTED') . '",
+        "back\\slash\\' . system('touch INJECTED') . '",
+        "quote' ! touch INJECTED '",
+        "$DATA' . system('touch INJECTED') . '",
+        "EOD",
+    };
+    return payloads;
+}
+
 /// Exactly one line on stderr, starting "bandlight: ".
 void CheckOneLineError(const Result& r)
 {
@@ -103,18 +121,7 @@ TEST_CASE("Names and file names never reach gnuplot as code", "[robustness][host
         return Sh("cd " + ShellWord(dir) + " && '" + BANDLIGHT_EXE + "' plot --reflectance " +
                   ShellWord(in) + " -o " + ShellWord(out));
     };
-    const std::vector<std::string> payloads = {
-        "a'.system('touch INJECTED').'",
-        "a\".system(\"touch INJECTED\").\"",
-        "`touch INJECTED`",
-        "x' `touch INJECTED` '",
-        "@MACRO' . system('touch INJECTED') . '",
-        "back\\slash\\' . system('touch INJECTED') . '",
-        "quote' ! touch INJECTED '",
-        "$DATA' . system('touch INJECTED') . '",
-        "EOD",
-    };
-    for (const std::string& p : payloads)
+    for (const std::string& p : GnuplotPayloads())
     {
         INFO(p);
         // The payload as a spectrum's name (a CSV column header).
@@ -158,18 +165,7 @@ TEST_CASE("Light names and file names never reach gnuplot as code in quality --p
     {
         return Sh("cd " + ShellWord(dir) + " && '" + BANDLIGHT_EXE + "' quality " + args);
     };
-    const std::vector<std::string> payloads = {
-        "a'.system('touch INJECTED').'",
-        "a\".system(\"touch INJECTED\").\"",
-        "`touch INJECTED`",
-        "x' `touch INJECTED` '",
-        "@MACRO' . system('touch INJECTED') . '",
-        "back\\slash\\' . system('touch INJECTED') . '",
-        "quote' ! touch INJECTED '",
-        "$DATA' . system('touch INJECTED') . '",
-        "EOD",
-    };
-    for (const std::string& p : payloads)
+    for (const std::string& p : GnuplotPayloads())
     {
         INFO(p);
         // The payload as a light's name (a CSV column header), for the
