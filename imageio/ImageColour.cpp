@@ -11,21 +11,13 @@
 #include "plugin/ConfigBuilder.h"
 #include "plugin/OcioTransforms.h"
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {
 
 namespace
 {
-
-std::string Lower(std::string s)
-{
-    for (char& c : s)
-    {
-        c = char(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return s;
-}
 
 const char* kOptions =
     "say what the file holds with {colorspace} (a built-in space such as "
@@ -88,7 +80,7 @@ const RgbSpace* SpaceNamed(const std::string& name)
 {
     for (const RgbSpace& s : BuiltinRgbSpaces())
     {
-        if (Lower(ColorSpaceName(s)) == Lower(name))
+        if (ToLower(ColorSpaceName(s)) == ToLower(name))
         {
             return &s;
         }
@@ -154,7 +146,7 @@ ImageEncoding NamedEncoding(const std::string& name)
 {
     ImageEncoding e;
     e.evidence = "as given";
-    if (Lower(name) == "srgb")
+    if (ToLower(name) == "srgb")
     {
         e.space = FindRgbSpace("rec709");
         e.srgbCurve = true;
@@ -180,7 +172,7 @@ void RequireNamedChannels(const std::string& path, const std::string& layers)
     const size_t dot = path.find_last_of('.');
     const size_t slash = path.find_last_of('/');
     const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string ext = hasExtension ? Lower(path.substr(dot + 1)) : "";
+    const std::string ext = hasExtension ? ToLower(path.substr(dot + 1)) : "";
     if (ext != "exr" && ext != "sxr")
     {
         throw ParameterError(PathInMessage(path) + ": " + layers +
@@ -197,7 +189,7 @@ bool IsDisplayReferredFile(const std::string& path)
     {
         return false;
     }
-    const std::string ext = Lower(path.substr(dot + 1));
+    const std::string ext = ToLower(path.substr(dot + 1));
     for (const char* e : {"png", "jpg", "jpeg", "jpe", "jfif", "gif", "bmp", "webp", "ppm", "pgm",
                           "pnm", "tga", "ico"})
     {
@@ -237,7 +229,7 @@ struct TagEvidence
 /// colorInteropID: the Color Interop Forum's name of the encoding.
 void ReadInteropId(const std::string& interop, TagEvidence& tags)
 {
-    const std::string id = Lower(interop);
+    const std::string id = ToLower(interop);
     InteropId known;
     const RgbSpace* space = SpaceOfInteropId(id, known);
     if (!space)
@@ -291,7 +283,7 @@ void ReadBandlightName(const std::string& named, TagEvidence& tags)
 std::optional<ImageEncoding> ReadOiioColorSpace(const std::string& oiio, const ImageData& header,
                                                 const std::string& what)
 {
-    const std::string v = Lower(oiio);
+    const std::string v = ToLower(oiio);
     ImageEncoding e;
     e.evidence = "oiio:ColorSpace " + oiio;
     double gamma = 0.0;

@@ -13,6 +13,7 @@
 
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {
@@ -130,19 +131,13 @@ std::vector<Target> Targets()
     return t;
 }
 
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
-
 /// The words a colour space is known by: name, aliases, family, lower-case.
 std::string NamesOf(const OCIO::ConstColorSpaceRcPtr& cs)
 {
-    std::string all = Lower(cs->getName()) + " " + Lower(cs->getFamily());
+    std::string all = ToLower(cs->getName()) + " " + ToLower(cs->getFamily());
     for (size_t i = 0; i < cs->getNumAliases(); ++i)
     {
-        all += " " + Lower(cs->getAlias(i));
+        all += " " + ToLower(cs->getAlias(i));
     }
     return all;
 }

@@ -12,6 +12,7 @@
 
 #include "render/SceneColour.h"
 #include "spectral/CieData.h"
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 #include "transforms/BandModel.h"
@@ -95,7 +96,7 @@ struct CameraRays
           up(right.cross(forward)),
           orthographic(c.projection == Camera::Projection::ORTHOGRAPHIC),
           halfHeight(orthographic ? 0.5 * c.size
-                                  : std::tan(0.5 * c.fovDeg * 3.14159265358979323846 / 180.0)),
+                                  : std::tan(0.5 * c.fovDeg * kPi / 180.0)),
           aspect(double(c.width) / double(c.height)),
           width(c.width),
           height(c.height)

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "report/Gnuplot.h"
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 
 namespace bandlight
@@ -13,8 +14,6 @@ namespace bandlight
 
 namespace
 {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The colour of hue bin `j` (of 16, bin 1 centred on 11.25°): a hue
 /// circle at the bin's angle, as TM-30's graphic colours its bins.

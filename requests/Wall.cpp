@@ -24,13 +24,6 @@ namespace bandlight::jobs
 namespace
 {
 
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
-
 /// The fields of a line of a spectrum file: separated by commas,
 /// semicolons, tabs or spaces, quotes dropped.
 std::vector<std::string> Fields(const std::string& line)
@@ -185,7 +178,7 @@ void CheckWallRequest(const WallRequest& r)
         }
         for (size_t k = 0; k < i; ++k)
         {
-            if (Lower(r.emitters[k].name) == Lower(e.name))
+            if (ToLower(r.emitters[k].name) == ToLower(e.name))
             {
                 throw ParameterError("the emitter '" + OneLine(e.name, 40) +
                                      "' is named twice ({emitter}): each drive channel once");
@@ -204,7 +197,7 @@ void CheckWallRequest(const WallRequest& r)
     {
         for (size_t k = 0; k < i; ++k)
         {
-            if (Lower(r.whiteBalances[k]) == Lower(r.whiteBalances[i]))
+            if (ToLower(r.whiteBalances[k]) == ToLower(r.whiteBalances[i]))
             {
                 throw ParameterError("the white balance '" + OneLine(r.whiteBalances[i], 40) +
                                      "' is given twice ({white_balance}): give each once");

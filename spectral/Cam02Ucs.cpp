@@ -14,8 +14,6 @@ namespace bandlight
 namespace
 {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // clang-format off
 /// CAT02 (CIE 159:2004): XYZ to the sharpened RGB of the adaptation.
 const Mat3& Cat02()

@@ -23,12 +23,6 @@ namespace bandlight
 namespace
 {
 
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
-
 std::string Num(double v)
 {
     std::ostringstream o;
@@ -178,7 +172,7 @@ int ChannelIndex(const Json& name)
     static const std::pair<const char*, int> kNames[] = {
         {"r", 0}, {"red", 0}, {"g", 1}, {"green", 1}, {"b", 2}, {"blue", 2},
     };
-    const std::string n = name.is_string() ? Lower(name.get<std::string>()) : std::string();
+    const std::string n = name.is_string() ? ToLower(name.get<std::string>()) : std::string();
     for (const auto& [known, index] : kNames)
     {
         if (n == known)
@@ -349,7 +343,7 @@ CameraSensitivities ReadCameraText(const std::string& text, const std::string& s
     int index[3] = {-1, -1, -1};
     for (int k = 0; k < 3; ++k)
     {
-        const std::string n = Lower(spectra[size_t(k)].name);
+        const std::string n = ToLower(spectra[size_t(k)].name);
         const int c = n == "r" || n == "red"     ? 0
                       : n == "g" || n == "green" ? 1
                       : n == "b" || n == "blue"  ? 2

@@ -8,7 +8,6 @@ namespace bandlight
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 // A stimulus coarser than the matching functions' tables, brought onto
 // their grid. Summed at its own samples, a lamp given every 100 nm would be

@@ -12,6 +12,9 @@ namespace bandlight
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+/// π, for the hue angles and the geometry bandlight computes.
+inline constexpr double kPi = 3.14159265358979323846;
+
 /// Tristimulus values of a stimulus phi(λ), unnormalised:
 /// (Σ φ x̄ Δλ, Σ φ ȳ Δλ, Σ φ z̄ Δλ) on the stimulus's own grid, the matching
 /// functions interpolated there (zero outside 360–830 nm).

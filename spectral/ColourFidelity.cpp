@@ -20,7 +20,6 @@ namespace bandlight
 namespace
 {
 
-constexpr double kPi = 3.14159265358979323846;
 // CIE 224:2017: the evaluation range and the range of CCT with a reference.
 constexpr double kFirstNm = 380.0;
 constexpr double kLastNm = 780.0;

@@ -9,18 +9,13 @@
 
 #include "spectral/ChromaticAdaptation.h"
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 
 namespace bandlight
 {
 
 namespace
 {
-
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
 
 /// The prefixes that say a name means the linear space ("lin-rec709").
 constexpr const char* kLinearPrefixes[] = {"lin-", "linear-", "lin_"};
@@ -81,7 +76,7 @@ std::string RgbSpaceChoices()
 
 const RgbSpace& FindRgbSpace(const std::string& name)
 {
-    const std::string given = Lower(name);
+    const std::string given = ToLower(name);
     const auto find = [](const std::string& k) -> const RgbSpace*
     {
         for (const RgbSpace& s : BuiltinRgbSpaces())

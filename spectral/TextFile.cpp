@@ -194,4 +194,16 @@ void CheckUtf8Text(std::string& text, const std::string& source)
     }
 }
 
+std::string ToLower(std::string text)
+{
+    for (char& c : text)
+    {
+        if (c >= 'A' && c <= 'Z')
+        {
+            c = char(c - 'A' + 'a');
+        }
+    }
+    return text;
+}
+
 }  // namespace bandlight

@@ -34,6 +34,10 @@ void RequireRegularFile(const std::string& path, const std::string& what);
 /// opens (OpenImageIO, OpenColorIO), whose errors do not say why.
 int InputFileError(const std::string& path);
 
+/// `text` with its ASCII letters in lower case (names compared without
+/// regard to case; other bytes, UTF-8 included, unchanged).
+std::string ToLower(std::string text);
+
 /// Checks that `text` is UTF-8 (ASCII included) and removes a leading UTF-8
 /// byte-order mark. UTF-16/UTF-32 (byte-order mark or NUL bytes) and byte
 /// sequences that are not UTF-8 are an Exception "SOURCE:LINE: ...", naming

@@ -7,6 +7,7 @@
 
 #include <Eigen/QR>
 
+#include "spectral/Colorimetry.h"
 #include "spectral/Metrics.h"
 
 namespace bandlight
@@ -35,7 +36,6 @@ double De00Distance::operator()(const Vec3& rgb, const Vec3& reference) const
 
 Mat3 De00Jacobian(const Vec3& lab)
 {
-    constexpr double kPi = 3.14159265358979323846;
     const double c = std::hypot(lab.y(), lab.z());
     const double l50 = (lab.x() - 50.0) * (lab.x() - 50.0);
     const double sl = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);

@@ -8,19 +8,11 @@
 #include <Eigen/LU>
 
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 #include "transforms/SurfaceRenderer.h"
 
 namespace bandlight
 {
-
-namespace
-{
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
-}  // namespace
 
 std::string Plates::key() const
 {
@@ -118,7 +110,7 @@ std::string PlateAdaptationChoices()
 Plates ParsePlates(const std::string& convention, const std::string& adaptation)
 {
     Plates p;
-    const std::string c = Lower(convention);
+    const std::string c = ToLower(convention);
     const auto conv = std::find_if(PlateConventions().begin(), PlateConventions().end(),
                                    [&](const PlateConventionEntry& e) { return c == e.key; });
     if (conv == PlateConventions().end())
@@ -126,7 +118,7 @@ Plates ParsePlates(const std::string& convention, const std::string& adaptation)
         throw Exception("unknown plates '" + convention + "' (" + PlateConventionChoices() + ")");
     }
     p.convention = conv->convention;
-    const std::string a = Lower(adaptation);
+    const std::string a = ToLower(adaptation);
     const auto adapt = std::find_if(PlateAdaptations().begin(), PlateAdaptations().end(),
                                     [&](const AdaptationEntry& e) { return a == e.key; });
     if (adapt == PlateAdaptations().end())

@@ -6,6 +6,8 @@
 
 #include <Eigen/LU>
 
+#include "spectral/Colorimetry.h"
+
 namespace bandlight
 {
 
@@ -57,7 +59,6 @@ ReflectanceSet RandomSmoothSet(int count, unsigned seed, const std::string& name
     ReflectanceSet set{name, {}};
     std::mt19937 rng(seed);
     std::normal_distribution<double> coeff(0.0, 1.0);
-    constexpr double kPi = 3.14159265358979323846;
     for (int k = 0; k < count; ++k)
     {
         double a[4], b[4];

@@ -265,3 +265,12 @@ TEST_CASE("Writing where files cannot be created is a FileError EACCES", "[spect
           out + ": cannot create output file (" + std::strerror(EACCES) + ")");
     CHECK_FALSE(fs::exists(out));
 }
+
+TEST_CASE("ToLower lowers ASCII letters only, as names are compared", "[spectral]")
+{
+    CHECK(bandlight::ToLower("Rec709 ACEScg_Z") == "rec709 acescg_z");
+    CHECK(bandlight::ToLower("@[`{") == "@[`{");  // the bytes beside A-Z and a-z
+    // UTF-8 (here "Ä") is left as it is: no locale decides a name's case.
+    CHECK(bandlight::ToLower("\xC3\x84X") == "\xC3\x84x");
+    CHECK(bandlight::ToLower("").empty());
+}

@@ -30,6 +30,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "spectral/Colorimetry.h"
 #include "spectral/Exception.h"
 #include "spectral/Parallel.h"
 #include "transforms/RootPolynomial.h"
@@ -45,7 +46,6 @@ namespace
 
 /// Planes at the training hues' quantiles; more where a gap is wider.
 constexpr int kPlanes = 6;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxGap = 100.0 * kPi / 180.0;
 /// The ridge towards the least-squares 3×3, relative to the mean diagonal
 /// of the normal equations.
