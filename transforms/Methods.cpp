@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cctype>
 #include <sstream>
+#include <stdexcept>
 
 #include "spectral/Exception.h"
+#include "spectral/TextFile.h"
 #include "transforms/detail/MethodFits.h"
 
 namespace bandlight
@@ -20,12 +22,6 @@ namespace bandlight
 
 namespace
 {
-
-std::string Lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
 
 /// A method with one name.
 template <ChangeMethod M>
@@ -434,7 +430,7 @@ const std::vector<NamedSpectrum>& TrainingOf(const MethodSpec& method)
 
 MethodSpec ParseMethod(const std::string& name)
 {
-    const std::string n = Lower(name);
+    const std::string n = ToLower(name);
     MethodSpec m;
     m.name = n;
     for (const MethodEntry& e : Methods())
@@ -454,6 +450,37 @@ MethodSpec ParseMethod(const std::string& name)
         choices += (choices.empty() ? "" : ", ") + std::string(e.syntax);
     }
     throw Exception("unknown method '" + name + "' (" + choices + ")");
+}
+
+MethodSpec DefaultSpec(ChangeMethod method)
+{
+    // The first name of the entry's syntax that parses to this key: its
+    // default parameters, as a user who named it would get them.
+    const MethodEntry& entry = FindMethod(method);
+    const std::string syntax = entry.syntax;
+    size_t start = 0;
+    while (start < syntax.size())
+    {
+        const size_t end = std::min(syntax.find(',', start), syntax.size());
+        const std::string name = syntax.substr(start, end - start);
+        MethodSpec spec;
+        spec.name = name;
+        if (entry.parse(name, spec))
+        {
+            if (entry.methods.size() == 1)
+            {
+                spec.method = entry.methods.front();
+            }
+            if (spec.method == method)
+            {
+                return spec;
+            }
+        }
+        start = syntax.find_first_not_of(' ', end + 1);
+        start = start == std::string::npos ? syntax.size() : start;
+    }
+    throw std::logic_error(std::string("method entry '") + entry.syntax +
+                           "' names no default form of one of its keys");
 }
 
 const std::vector<std::string>& LinearMethodNames()

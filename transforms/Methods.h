@@ -220,6 +220,12 @@ const MethodEntry& FindMethod(const std::string& name);
 /// Parses a method name (case-insensitive); throws Exception listing the choices.
 MethodSpec ParseMethod(const std::string& name);
 
+/// A method by its key with its default parameters, as its first name in
+/// the entry's syntax gives them: how code outside transforms/methods/
+/// names a method without writing its name (rootpoly-plate is
+/// DefaultSpec(ChangeMethod::ROOTPOLY_PLATE)).
+MethodSpec DefaultSpec(ChangeMethod method);
+
 /// The name of the reference method (the exact spectral answer).
 std::string ReferenceMethodName();
 

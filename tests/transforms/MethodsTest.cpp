@@ -51,6 +51,32 @@ TEST_CASE("Every registry entry has the builder its exactness needs", "[transfor
     CHECK(FindMethod(ReferenceMethodName()).isReference());
 }
 
+TEST_CASE("DefaultSpec gives each key its first name's parameters", "[transforms][methods]")
+{
+    for (const MethodEntry& e : Methods())
+    {
+        for (ChangeMethod m : e.methods)
+        {
+            INFO(e.syntax);
+            const MethodSpec spec = DefaultSpec(m);
+            CHECK(spec.method == m);
+            // What a user naming it gets: the same key and parameters.
+            const MethodSpec parsed = ParseMethod(spec.name);
+            CHECK(parsed.method == m);
+            CHECK(parsed.name == spec.name);
+            CHECK(parsed.degree == spec.degree);
+            CHECK(parsed.whitePreserving == spec.whitePreserving);
+        }
+    }
+    // The defaults the wall and help texts rely on, by name.
+    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_PLATE).name == "rootpoly-plate");
+    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_PLATE).degree == 2);
+    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_CAMERA).name == "rootpoly-camera");
+    CHECK(DefaultSpec(ChangeMethod::BAND).name == "band3");
+    CHECK(DefaultSpec(ChangeMethod::BAND_WP).name == "band3-wp");
+    CHECK(DefaultSpec(ChangeMethod::BAND_WP).whitePreserving);
+}
+
 TEST_CASE("Every default name parses to its own entry and relights A to D65",
           "[transforms][methods]")
 {
