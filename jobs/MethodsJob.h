@@ -7,21 +7,13 @@
 #include <string>
 #include <vector>
 
+#include <bandlight/Types.h>
+
 namespace bandlight::jobs
 {
 
-/// One registry entry, as `bandlight methods` lists it.
-struct MethodInfo
-{
-    std::string names;        ///< its names as help gives them: "rootpoly, rootpoly3"
-    std::string exactness;    ///< "linear" (one 3x3), "non-linear" (an op per pixel) or "reference"
-    bool native = false;      ///< `apply` runs its op itself, not its OCIO form
-    bool needsCamera = false; ///< needs the camera that shot the plates
-    bool takesTraining = false;  ///< a user's training set may replace its own
-    size_t trainingSize = 0;     ///< its default training set's size (0: not fitted)
-    std::vector<std::string> defaultIn;  ///< "config", "accuracy", "camera accuracy"
-    std::string description;  ///< its own sentence, for its first name
-};
+/// One registry entry, as `bandlight methods` lists it (a public type).
+using MethodInfo = bandlight::MethodInfo;
 
 /// Every method, in the registry's order.
 std::vector<MethodInfo> ListMethods();

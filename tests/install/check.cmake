@@ -16,11 +16,11 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK_DIR}/build" RESULT_VARI
 if(rc)
     message(FATAL_ERROR "building the host failed")
 endif()
-execute_process(COMMAND "${WORK_DIR}/build/host" RESULT_VARIABLE rc)
+execute_process(COMMAND "${WORK_DIR}/build/host" "${WORK_DIR}" RESULT_VARIABLE rc)
 if(rc)
     message(FATAL_ERROR "the host ran but gave the wrong answer")
 endif()
-# The jobs library's host writes, with a default request, the config.ocio
+# The public API's host writes, with nothing but the folder given, the config.ocio
 # the command writes with its defaults.
 execute_process(COMMAND "${WORK_DIR}/build/config_host" "${WORK_DIR}/host_config"
                 RESULT_VARIABLE rc)

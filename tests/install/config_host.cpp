@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// A host calling the jobs library: the config job with a default request
+// A host of the public API: WriteConfig with nothing but the folder given
 // writes FOLDER/config.ocio (the test compares it with the command's).
 #include <iostream>
 
@@ -12,9 +12,9 @@ int main(int argc, char** argv)
         std::cerr << "usage: config_host FOLDER\n";
         return 2;
     }
-    bandlight::jobs::ConfigRequest request;
-    request.out = argv[1];
-    const bandlight::jobs::ConfigResult result = bandlight::jobs::MakeConfig(request);
-    std::cout << result.package.config->getNumLooks() << " looks\n";
-    return 0;
+    bandlight::ConfigSettings settings;
+    settings.out = argv[1];
+    const bandlight::WrittenConfig written = bandlight::WriteConfig(settings);
+    std::cout << written.looks.size() << " looks in " << written.file << "\n";
+    return written.looks.empty() ? 1 : 0;
 }

@@ -38,6 +38,8 @@ BELOW = {
                 "requests", "imaging", "report"],
     "jobs": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm", "requests",
              "imaging", "camera", "measure", "report"],
+    "api": ["spectral", "transforms", "render", "luts", "plugin", "imageio", "farm", "requests",
+            "imaging", "camera", "measure", "report", "jobs"],
 }
 # The faces: they may include every library layer, and never each other.
 FACES = ["cli", "python/src", "bench"]
