@@ -2,6 +2,7 @@
 // The public API (include/bandlight/bandlight.h) in process: what it writes
 // is what the command writes for the same request, a field left empty is the
 // default every face has, and its errors are the command's one line.
+// Covers, through the entry points it calls: jobs/MethodsJob.cpp.
 #include <array>
 #include <filesystem>
 #include <stdexcept>

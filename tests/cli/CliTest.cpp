@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of the bandlight command: output shapes, exit codes, errors,
 // and agreement with ArgyllCMS spec2cie.
+// Covers, through the entry points it calls: cli/main.cpp, cli/Common.cpp, cli/Diagnostics.cpp,
+// cli/CommandAccuracy.cpp, cli/CommandConfig.cpp, cli/CommandCri.cpp, cli/CommandLut.cpp,
+// cli/CommandMethods.cpp, cli/CommandPackage.cpp, cli/CommandTables.cpp, cli/CommandXyz.cpp,
+// jobs/PackageJob.cpp.
 #include <sys/wait.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight idt` as a user runs it: an ociocheck-clean config, the
 // interpolation curve and the as-shot neutral read back from its JSON.
+// Covers, through the entry points it calls: cli/CommandIdt.cpp.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

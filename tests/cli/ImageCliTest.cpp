@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of config, lut and apply against the hosts' own tools:
 // ociocheck and oiiotool.
+// Covers, through the entry points it calls: cli/CommandApply.cpp, cli/CommandPlot.cpp.
 #include <sys/stat.h>
 #include <sys/wait.h>
 

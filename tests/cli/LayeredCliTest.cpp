@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of apply on layered files: light groups (in one part or
 // across the parts of a multi-part EXR), spectral renders and mattes.
+// Covers, through the entry points it calls: cli/CommandSpectral.cpp.
 #include <sys/stat.h>
 #include <sys/wait.h>
 

@@ -2,6 +2,8 @@
 // `bandlight quality` as scripts use it and as users get it wrong: the
 // table, JSON and CSV agree; a mistake is one line on stderr and exit 2
 // before any work, a bad spectrum named by file and line.
+// Covers, through the entry points it calls: cli/CommandQuality.cpp, jobs/QualityJob.cpp,
+// report/LightQualityPlot.cpp.
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

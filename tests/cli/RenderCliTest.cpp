@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `bandlight render`: the bundled scenes, the plan, and malformed scenes.
+// Covers, through the entry points it calls: cli/CommandRender.cpp, report/DeltaEMap.cpp.
 #include <sys/stat.h>
 
 #include <fstream>

@@ -5,6 +5,7 @@
 // exit code 2 before any work, nothing written. And the good case as a user
 // checks it: ociocheck passes, ocioconvert with WALL_WB set gives each white
 // balance's drive.
+// Covers, through the entry points it calls: cli/CommandWall.cpp.
 #include <cmath>
 #include <filesystem>
 #include <fstream>

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The accuracy job (jobs/AccuracyJob) run in process, as a C++ host runs
 // it: its document and report are the command's.
+// Covers, through the entry points it calls: measure/AccuracyOptions.cpp,
+// measure/AccuracyPlot.cpp, measure/AccuracyReport.cpp, measure/Cost.cpp.
 #include <string>
 
 #include <catch2/catch.hpp>

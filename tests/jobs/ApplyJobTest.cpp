@@ -3,6 +3,8 @@
 // the command's pixels for a change of light, OCIO's for a look of any
 // config; light groups relit with the rest of the file kept, every part of a
 // multi-part EXR carried, a matte mixing two changes, frame sets.
+// Covers, through the entry points it calls: imaging/ImageApply.cpp, imaging/RelightForms.cpp,
+// imaging/Mattes.cpp, imageio/ImageFiles.cpp, requests/Apply.cpp, plugin/NativeKernels.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>

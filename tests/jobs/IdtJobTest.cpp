@@ -3,6 +3,8 @@
 // matrices (measured through OCIO's processors and its CLF reader), a
 // studio config extended with input spaces keeps its own, and the JSON
 // document carries the result.
+// Covers, through the entry points it calls: camera/IdtFit.cpp, report/IdtReport.cpp,
+// plugin/ConfigInputSpaces.cpp.
 #include <filesystem>
 #include <fstream>
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The jobs' inputs: names or files, plates and cameras, the defaults table,
 // and messages that name parameters as each face spells them.
+// Covers, through the entry points it calls: farm/Reporter.cpp.
 #include <fstream>
 #include <string>
 

@@ -2,6 +2,7 @@
 // Light groups (jobs/LightGroups): found in every naming, relit per group
 // with the beauty rebuilt as Σ groups + residual, and refused when they are
 // no partition of the beauty.
+// Covers, through the entry points it calls: imaging/LightGroupRelight.cpp.
 #include <cmath>
 #include <cstring>
 #include <string>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The output plan: every output path of a run checked before any work.
+// Covers, through the entry points it calls: farm/Frames.cpp.
 #include <filesystem>
 #include <fstream>
 

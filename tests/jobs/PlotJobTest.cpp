@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The plot job in process, against the command's file.
+// Covers, through the entry points it calls: report/Gnuplot.cpp.
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -2,6 +2,7 @@
 // The render job in process: its comparison against the spectral render,
 // its outputs as one set, its checks before the work, the command's bytes,
 // and light groups whose sum is the beauty.
+// Covers, through the entry points it calls: imaging/RenderFiles.cpp, requests/Render.cpp.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>

@@ -2,6 +2,8 @@
 // The spectral job's light groups (jobs/SpectralJob): a two-light render
 // relit group by group against the same scene rendered under the new
 // lights, and per-group RGB looks against one global look.
+// Covers, through the entry points it calls: imaging/SpectralImages.cpp,
+// imaging/SpectralGroups.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -6,6 +6,8 @@
 // their form, and the written config — validated, read back — gives each
 // white balance's transforms through the context variable, equal to its
 // files.
+// Covers, through the entry points it calls: camera/Wall.cpp, camera/WallFit.cpp,
+// plugin/WallConfig.cpp, report/WallReport.cpp, requests/Wall.cpp.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

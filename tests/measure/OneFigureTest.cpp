@@ -5,6 +5,8 @@
 // (ReflectanceSetFromSpectralImage) or mapped pixel by pixel over that image
 // (WriteAccuracyHeatmaps). Each path summarises its sample with Summarise
 // (spectral/Statistics.h); this checks they agree on what they summarise.
+// Covers, through the entry points it calls: measure/SpectralAccuracy.cpp,
+// measure/detail/AccuracySummary.cpp.
 #include <catch2/catch.hpp>
 
 #include <stdlib.h>

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// Covers, through the entry points it calls: plugin/ConfigExtension.cpp,
+// plugin/ConfigReferences.cpp, plugin/ConfigWriter.cpp, plugin/detail/ConfigParts.cpp,
+// plugin/OcioTransforms.cpp, plugin/SceneLinearEvidence.cpp, requests/Config.cpp.
 #include <algorithm>
 #include <cstdio>
 #include <sstream>

@@ -2,6 +2,8 @@
 // The scene reader says no to what it would ignore: every key is used or an
 // error "FILE:LINE: what" at the offending key's line. And every form it
 // accepts reads as docs/scenes.md says, defaults included.
+// Covers, through the entry points it calls: render/Scene.cpp, render/SceneLights.cpp,
+// render/SceneMaterials.cpp, render/YamlReader.cpp.
 #include <catch2/catch.hpp>
 
 #include "render/SceneFile.h"

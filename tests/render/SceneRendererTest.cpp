@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// Covers, through the entry points it calls: render/SceneColour.cpp.
 #include <cmath>
 
 #include <catch2/catch.hpp>

@@ -2,6 +2,7 @@
 // FileError: a file that cannot be opened, read, created or written carries
 // its path and errno, whatever the message says; content that was read and
 // refused is an Exception, never a FileError.
+// Covers, through the entry points it calls: spectral/TextFile.cpp.
 #include "spectral/Exception.h"
 
 #include <sys/stat.h>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// Covers, through the entry points it calls: spectral/SpectralLayout.cpp,
+// spectral/SpectralLayoutFamilies.cpp, spectral/SpectralWeights.cpp.
 #include "spectral/SpectralImage.h"
 
 #include <catch2/catch.hpp>

@@ -9,6 +9,7 @@
 // them as its own output, without naming EBU's TLCI application as their
 // source. They check this implementation against an independent reading of
 // Tech 3355, not against EBU's calculator.
+// Covers, through the entry points it calls: spectral/TelevisionLightingReference.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 // (MINPACK's Levenberg–Marquardt as Eigen ships it, with numerical
 // derivatives and another parameterisation), DNG interpolation, as-shot
 // neutrals and chart IDTs.
+// Covers, through the entry points it calls: transforms/IdtAsShot.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 // and invertible, neutrals stay neutral, balanced looks on balanced plates
 // score as lit looks on lit plates, and the CIE observer as a camera
 // reproduces the plain path.
+// Covers, through the entry points it calls: spectral/CameraFile.cpp, transforms/Camera.cpp.
 #include <cmath>
 #include <map>
 #include <sstream>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// Covers, through the entry points it calls: transforms/methods/RootPoly.cpp.
 #include <cmath>
 #include <random>
 

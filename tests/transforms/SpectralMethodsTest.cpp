@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// Covers, through the entry points it calls: transforms/Upsampler.cpp,
+// transforms/methods/Upsample.cpp.
 #include <catch2/catch.hpp>
 
 #include "transforms/LitMethod.h"

@@ -3,6 +3,7 @@
 // reference renderer: a remittance as a surface is the remittance, a
 // diagonal Donaldson matrix is that remittance, and a fluorescent surface
 // sends back light at wavelengths the illuminant does not have.
+// Covers, through the entry points it calls: transforms/SurfaceRenderer.cpp.
 #include <catch2/catch.hpp>
 
 #include "spectral/CieData.h"

@@ -8,6 +8,7 @@
 // plates than the plain least-squares root polynomial, better than
 // rootpoly-camera at the camera's own plates on remittances it was not
 // fitted on, and the IDT it is given honoured.
+// Covers, through the entry points it calls: transforms/De00Fit.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
