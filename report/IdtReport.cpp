@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/ResultTable.h"
 #include "requests/Inputs.h"
 #include "spectral/ColourRendering.h"
 
@@ -14,16 +15,6 @@ namespace bandlight::jobs
 
 namespace
 {
-
-nlohmann::ordered_json MatrixJson(const Mat3& m)
-{
-    nlohmann::ordered_json a = nlohmann::ordered_json::array();
-    for (int r = 0; r < 3; ++r)
-    {
-        a.push_back({m(r, 0), m(r, 1), m(r, 2)});
-    }
-    return a;
-}
 
 std::string Row(const Mat3& m, int r)
 {
@@ -75,7 +66,7 @@ std::string IdtDocument(const IdtResult& r)
         nlohmann::ordered_json err;
         for (const IdtError& s : e.errors)
         {
-            err[s.set] = {{"mean", s.mean}, {"p95", s.p95}, {"max", s.max}};
+            err[s.set] = StatisticsJson(s.statistics(), StatisticsFields::MEAN_P95_MAX);
         }
         i["error"] = err;
         if (!e.colorSpace.empty())
@@ -128,22 +119,12 @@ std::string IdtDocument(const IdtResult& r)
         j["chart"] = {{"patches", r.trainingCount}, {"neutral_patch", r.chartNeutral}};
         if (r.hasChartRootPolynomial)
         {
-            const Eigen::MatrixXd& m = r.chartRootPolynomial.matrix();
-            nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-            for (int row = 0; row < 3; ++row)
-            {
-                std::vector<double> v(size_t(m.cols()));
-                for (int c = 0; c < m.cols(); ++c)
-                {
-                    v[size_t(c)] = m(row, c);
-                }
-                rows.push_back(v);
-            }
             const IdtError& e = r.chartRootPolynomialError;
             j["chart"]["rootpoly"] = {
                 {"degree", r.chartRootPolynomial.degree()},
-                {"matrix", rows},
-                {"error", {{e.set, {{"mean", e.mean}, {"p95", e.p95}, {"max", e.max}}}}}};
+                {"matrix", MatrixJson(r.chartRootPolynomial.matrix())},
+                {"error",
+                 {{e.set, StatisticsJson(e.statistics(), StatisticsFields::MEAN_P95_MAX)}}}};
         }
     }
     return j.dump(2);

@@ -148,4 +148,29 @@ std::string CsvQuote(const std::string& cell)
     return q + "\"";
 }
 
+nlohmann::ordered_json StatisticsJson(const Statistics& s, StatisticsFields fields)
+{
+    if (fields == StatisticsFields::MEAN_P95_MAX)
+    {
+        return {{"mean", s.mean}, {"p95", s.p95}, {"max", s.max}};
+    }
+    return {
+        {"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}};
+}
+
+nlohmann::ordered_json MatrixJson(const Eigen::MatrixXd& m)
+{
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (Eigen::Index r = 0; r < m.rows(); ++r)
+    {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (Eigen::Index c = 0; c < m.cols(); ++c)
+        {
+            row.push_back(m(r, c));
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 }  // namespace bandlight

@@ -10,7 +10,10 @@
 #include <variant>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
+
+#include "spectral/Statistics.h"
 
 namespace bandlight
 {
@@ -55,5 +58,21 @@ private:
 /// `cell` quoted for CSV (RFC 4180) when it holds a comma, a quote or a
 /// line break.
 std::string CsvQuote(const std::string& cell);
+
+/// The figures of a Statistics a document gives: all of them (count, mean,
+/// median, p95, max) or, in `idt`'s documents, mean, p95 and max.
+enum class StatisticsFields
+{
+    ALL,
+    MEAN_P95_MAX,
+};
+
+/// A summary as a JSON object, its figures in the order above: every
+/// document writes a summary through this.
+nlohmann::ordered_json StatisticsJson(const Statistics& s,
+                                      StatisticsFields fields = StatisticsFields::ALL);
+
+/// A matrix as JSON: an array of its rows, each an array of numbers.
+nlohmann::ordered_json MatrixJson(const Eigen::MatrixXd& m);
 
 }  // namespace bandlight

@@ -2,6 +2,7 @@
 #include "report/WallReport.h"
 
 #include "report/LightQualityReport.h"
+#include "report/ResultTable.h"
 
 #include <cmath>
 #include <sstream>
@@ -19,21 +20,6 @@ namespace
 
 using Json = nlohmann::ordered_json;
 
-Json MatrixJson(const Eigen::MatrixXd& m)
-{
-    Json a = Json::array();
-    for (Eigen::Index r = 0; r < m.rows(); ++r)
-    {
-        Json row = Json::array();
-        for (Eigen::Index c = 0; c < m.cols(); ++c)
-        {
-            row.push_back(m(r, c));
-        }
-        a.push_back(row);
-    }
-    return a;
-}
-
 Json VectorJson(const Eigen::VectorXd& v)
 {
     Json a = Json::array();
@@ -44,18 +30,12 @@ Json VectorJson(const Eigen::VectorXd& v)
     return a;
 }
 
-Json StatsJson(const Statistics& s)
-{
-    return {
-        {"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}};
-}
-
 Json FitJson(const WallFitFigures& f)
 {
     return {{"fit", f.fit},
-            {"before", StatsJson(f.before)},
-            {"after", StatsJson(f.after)},
-            {"least_squares", StatsJson(f.leastSquares)}};
+            {"before", StatisticsJson(f.before)},
+            {"after", StatisticsJson(f.after)},
+            {"least_squares", StatisticsJson(f.leastSquares)}};
 }
 
 /// The conventions every figure of the report follows (docs/wall.md).
@@ -212,16 +192,16 @@ std::string WallDocument(const WallResult& r)
         w["post_camera"]["root_polynomial"]["method"] = b.postMethod.name;
         w["post_camera"]["root_polynomial"]["degree"] = b.postRootPolynomial.degree();
         w["post_camera"]["root_polynomial"]["matrix"] = MatrixJson(b.postRootPolynomial.matrix());
-        w["post_camera"]["registry_rootpoly_camera"] = StatsJson(b.postRegistry);
+        w["post_camera"]["registry_rootpoly_camera"] = StatisticsJson(b.postRegistry);
         w["out_of_frustum"] = Json::array();
         for (const WallShown& s : b.shown)
         {
             Json errors;
             for (const WallSetErrors& e : s.errors)
             {
-                errors[e.set] = {{"before", StatsJson(e.before)},
-                                 {"pre_corrected", StatsJson(e.preCorrected)},
-                                 {"post_corrected", StatsJson(e.postCorrected)}};
+                errors[e.set] = {{"before", StatisticsJson(e.before)},
+                                 {"pre_corrected", StatisticsJson(e.preCorrected)},
+                                 {"post_corrected", StatisticsJson(e.postCorrected)}};
             }
             w["out_of_frustum"].push_back({{"shows", s.light},
                                            {"drive", VectorJson(s.drive)},

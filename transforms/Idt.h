@@ -53,6 +53,17 @@ struct IdtError
     double p95 = 0.0;  ///< nearest rank (Percentile)
     double max = 0.0;
 
+    /// Its figures as a summary (the median, not kept, zero).
+    Statistics statistics() const
+    {
+        Statistics s;
+        s.count = size_t(count);
+        s.mean = mean;
+        s.p95 = p95;
+        s.max = max;
+        return s;
+    }
+
     /// The figures of a summary (the set's name left empty).
     static IdtError Of(const Statistics& s)
     {
