@@ -3,6 +3,7 @@
 // no partition of the beauty (a denoised beauty), light-group files, layers
 // a format cannot name, matte options that do not fit. Each mistake is one
 // line on stderr and exit code 2 before any work, nothing of theirs lost.
+// Covers, through the entry points it calls: cli/ApplyInputs.cpp.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
