@@ -5,7 +5,6 @@
 #include "cli/ApplyInputs.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "cli/Diagnostics.h"
 #include "requests/Inputs.h"
@@ -183,44 +182,10 @@ void ReadLightGroupFile(ApplyOptions& o, const CLI::App& cmd)
     }
     std::string text = ReadTextFile(o.lightGroupFile, "light-group file");
     CheckUtf8Text(text, o.lightGroupFile);
-    // CRLF and CR-only line ends (old Mac editors) as LF.
-    std::string lines;
-    lines.reserve(text.size());
-    for (size_t i = 0; i < text.size(); ++i)
+    for (const ListLine& line : ListLines(text))
     {
-        if (text[i] == '\r')
-        {
-            lines += '\n';
-            i += i + 1 < text.size() && text[i + 1] == '\n' ? 1 : 0;
-        }
-        else
-        {
-            lines += text[i];
-        }
-    }
-    std::istringstream in(lines);
-    std::string line;
-    size_t number = 0;
-    while (std::getline(in, line))
-    {
-        ++number;
-        for (size_t hash = line.find('#'); hash != std::string::npos;
-             hash = line.find('#', hash + 1))
-        {
-            if (hash == 0 || line[hash - 1] == ' ' || line[hash - 1] == '\t')
-            {
-                line.erase(hash);  // a comment, to the end of the line
-                break;
-            }
-        }
-        const size_t first = line.find_first_not_of(" \t");
-        if (first == std::string::npos)
-        {
-            continue;
-        }
-        const size_t last = line.find_last_not_of(" \t");
-        o.lightGroups.push_back(line.substr(first, last - first + 1));
-        o.lightGroupSources.push_back(SourcePosition(o.lightGroupFile, number));
+        o.lightGroups.push_back(line.text);
+        o.lightGroupSources.push_back(SourcePosition(o.lightGroupFile, line.number));
     }
     if (o.lightGroups.size() == o.lightGroupSources.size() &&
         std::all_of(o.lightGroupSources.begin(), o.lightGroupSources.end(),

@@ -206,4 +206,36 @@ std::string ToLower(std::string text)
     return text;
 }
 
+std::vector<ListLine> ListLines(const std::string& text)
+{
+    std::vector<ListLine> items;
+    size_t number = 0;
+    size_t start = 0;
+    while (start < text.size())
+    {
+        size_t end = text.find_first_of("\r\n", start);
+        end = end == std::string::npos ? text.size() : end;
+        std::string line = text.substr(start, end - start);
+        // CRLF is one line end; CR alone (old Mac editors) and LF are one each.
+        start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+        ++number;
+        for (size_t hash = line.find('#'); hash != std::string::npos;
+             hash = line.find('#', hash + 1))
+        {
+            if (hash == 0 || line[hash - 1] == ' ' || line[hash - 1] == '\t')
+            {
+                line.erase(hash);  // a comment, to the end of the line
+                break;
+            }
+        }
+        const size_t first = line.find_first_not_of(" \t");
+        if (first != std::string::npos)
+        {
+            const size_t last = line.find_last_not_of(" \t");
+            items.push_back({number, line.substr(first, last - first + 1)});
+        }
+    }
+    return items;
+}
+
 }  // namespace bandlight

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace bandlight
 {
@@ -33,6 +35,19 @@ void RequireRegularFile(const std::string& path, const std::string& what);
 /// EACCES, ENOTDIR, EISDIR for a directory. For files that another library
 /// opens (OpenImageIO, OpenColorIO), whose errors do not say why.
 int InputFileError(const std::string& path);
+
+/// One line of a list file: its text, trimmed, and its number (from 1).
+struct ListLine
+{
+    size_t number = 0;
+    std::string text;
+};
+
+/// The items of a list file, one per line: lines ended by LF, CRLF or CR
+/// alone; a comment (a '#' that starts a line or follows a space or tab, to
+/// the end of the line) removed; spaces and tabs around an item trimmed;
+/// blank lines skipped. Each keeps its line's number for messages.
+std::vector<ListLine> ListLines(const std::string& text);
 
 /// `text` with its ASCII letters in lower case (names compared without
 /// regard to case; other bytes, UTF-8 included, unchanged).

@@ -275,3 +275,20 @@ TEST_CASE("ToLower lowers ASCII letters only, as names are compared", "[spectral
     CHECK(bandlight::ToLower("\xC3\x84X") == "\xC3\x84x");
     CHECK(bandlight::ToLower("").empty());
 }
+
+TEST_CASE("ListLines: one item a line, comments and blanks skipped, numbers kept", "[spectral]")
+{
+    // LF, CRLF and CR alone each end one line; a '#' after a space or at a
+    // line's start begins a comment, one inside an item does not.
+    const std::string text = "key=A:D65\r\n\n  # a comment\rfill=F11:D65#x  # tail\n\t \nlast";
+    const std::vector<bandlight::ListLine> items = bandlight::ListLines(text);
+    REQUIRE(items.size() == 3);
+    CHECK(items[0].number == 1);
+    CHECK(items[0].text == "key=A:D65");
+    CHECK(items[1].number == 4);
+    CHECK(items[1].text == "fill=F11:D65#x");
+    CHECK(items[2].number == 6);
+    CHECK(items[2].text == "last");
+    CHECK(bandlight::ListLines("").empty());
+    CHECK(bandlight::ListLines("# only\r\n\r\n").empty());
+}
