@@ -148,7 +148,7 @@ ImageEncoding NamedEncoding(const std::string& name)
     e.evidence = "as given";
     if (ToLower(name) == "srgb")
     {
-        e.space = FindRgbSpace("rec709");
+        e.space = Rec709Space();
         e.srgbCurve = true;
         return e;
     }
@@ -290,14 +290,14 @@ std::optional<ImageEncoding> ReadOiioColorSpace(const std::string& oiio, const I
     char tail = 0;
     if (v == "srgb" || v == "srgb_rec709_scene")
     {
-        e.space = FindRgbSpace("rec709");
+        e.space = Rec709Space();
         e.srgbCurve = true;
         return e;
     }
     if (std::sscanf(v.c_str(), "gamma%lf%c", &gamma, &tail) == 1 && gamma >= 0.1 && gamma <= 10.0)
     {
         // PNG's gAMA chunk as OpenImageIO reports it: Rec.709 primaries.
-        e.space = FindRgbSpace("rec709");
+        e.space = Rec709Space();
         e.gamma = gamma;
         return e;
     }
@@ -308,7 +308,7 @@ std::optional<ImageEncoding> ReadOiioColorSpace(const std::string& oiio, const I
         // chunk's and TIFF's default).
         if (IntegerChannels(header))
         {
-            e.space = FindRgbSpace("rec709");
+            e.space = Rec709Space();
             return e;
         }
         return std::nullopt;
@@ -356,7 +356,7 @@ ImageEncoding IdentifyImageEncoding(const ImageData& header, const std::string& 
     if (IsDisplayReferred(header))
     {
         ImageEncoding e;
-        e.space = FindRgbSpace("rec709");
+        e.space = Rec709Space();
         e.srgbCurve = true;
         e.evidence = "an untagged " + header.format + " of integer code values";
         return e;

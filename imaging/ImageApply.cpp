@@ -383,7 +383,7 @@ std::vector<std::string> ApplyLightGroupsWith(const LightGroupApply& apply,
             // colour management says otherwise; else the working space.
             const bool blender = !layout.groups.empty() &&
                                  layout.groups.front().naming == LightGroupNaming::BLENDER;
-            const RgbSpace& untagged = blender ? FindRgbSpace("rec709") : *colour.working;
+            const RgbSpace& untagged = blender ? Rec709Space() : *colour.working;
             const ImageEncoding encoding = colour.declared
                                                ? *colour.declared
                                                : IdentifyImageEncoding(header, in, untagged);

@@ -22,7 +22,7 @@ namespace bandlight::jobs
 std::vector<float> SrgbPreview(const RenderedImage& img, const RgbSpace& working)
 {
     OCIO::GroupTransformRcPtr g = OCIO::GroupTransform::Create();
-    g->appendTransform(MakeMatrixTransform(SpaceToSpace(working, FindRgbSpace("rec709"))));
+    g->appendTransform(MakeMatrixTransform(SpaceToSpace(working, Rec709Space())));
     OCIO::TransformRcPtr encode = SrgbDecode();
     encode->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
     g->appendTransform(encode);

@@ -208,7 +208,7 @@ ImageDescription EncodeForDisplay(SpectralRun& run, const std::string& out, floa
                  " pixels left 0-1 and are clipped: the format holds "
                  "display-referred code values (write an EXR to keep them)");
     }
-    ImageDescription d = LinearImageDescription(FindRgbSpace("rec709"), "sRGB");
+    ImageDescription d = LinearImageDescription(Rec709Space(), "sRGB");
     d.attributes = {{"colorInteropID", "srgb_rec709_scene"}};
     return d;
 }

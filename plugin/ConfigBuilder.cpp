@@ -264,7 +264,7 @@ ConfigPackage BuildConfig(const ConfigOptions& o)
                          OCIO::COLORSPACE_DIR_TO_REFERENCE);
         config->addColorSpace(cs);
     }
-    const RgbSpace& rec709 = FindRgbSpace("rec709");
+    const RgbSpace& rec709 = Rec709Space();
     OCIO::ColorSpaceRcPtr xyz =
         SceneSpace("CIE-XYZ-D65", "Scene-linear", "CIE 1931 XYZ with a D65 white (Y = 1 for white)",
                    "scene-linear");

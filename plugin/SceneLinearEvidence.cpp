@@ -95,7 +95,7 @@ Vec3 White(const RgbSpace& s)
 std::vector<Target> Targets()
 {
     std::vector<Target> t;
-    const RgbSpace* ap0 = &FindRgbSpace("aces2065-1");
+    const RgbSpace* ap0 = &Aces2065Space();
     for (const RgbSpace& target : BuiltinRgbSpaces())
     {
         const RgbSpace* tp = &target;

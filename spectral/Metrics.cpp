@@ -65,7 +65,7 @@ double Pq(double candela) noexcept
 
 Vec3 XyzToICtCp(const Vec3& xyz) noexcept
 {
-    static const Mat3 toRec2020 = RgbToXyzMatrix(FindRgbSpace("rec2020").chromaticities).inverse();
+    static const Mat3 toRec2020 = RgbToXyzMatrix(Rec2020Space().chromaticities).inverse();
     // BT.2100's LMS of linear BT.2020 RGB, then PQ per cone.
     static const Mat3 toLms = (Mat3() << 1688, 2146, 262, 683, 2951, 462, 99, 309, 3688)
                                   .finished() /

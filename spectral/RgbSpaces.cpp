@@ -64,6 +64,36 @@ const std::vector<RgbSpace>& BuiltinRgbSpaces()
     return spaces;
 }
 
+const RgbSpace& Rec709Space()
+{
+    static const RgbSpace& s = FindRgbSpace("rec709");
+    return s;
+}
+
+const RgbSpace& Rec2020Space()
+{
+    static const RgbSpace& s = FindRgbSpace("rec2020");
+    return s;
+}
+
+const RgbSpace& AcesCgSpace()
+{
+    static const RgbSpace& s = FindRgbSpace("acescg");
+    return s;
+}
+
+const RgbSpace& Aces2065Space()
+{
+    static const RgbSpace& s = FindRgbSpace("aces2065-1");
+    return s;
+}
+
+const RgbSpace& Ebu3213Space()
+{
+    static const RgbSpace& s = FindRgbSpace("ebu3213");
+    return s;
+}
+
 std::string RgbSpaceChoices()
 {
     std::string choices;

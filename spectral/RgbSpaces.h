@@ -60,6 +60,15 @@ const std::vector<RgbSpace>& BuiltinRgbSpaces();
 /// {colorspace} srgb.
 const RgbSpace& FindRgbSpace(const std::string& name);
 
+/// The built-in spaces code names for what they are rather than by a key
+/// string: the sRGB and PNG previews' primaries (Rec.709), ACES's two, the
+/// band model's EBU Tech 3213 and BT.2100's (Rec.2020).
+const RgbSpace& Rec709Space();
+const RgbSpace& Rec2020Space();
+const RgbSpace& AcesCgSpace();
+const RgbSpace& Aces2065Space();
+const RgbSpace& Ebu3213Space();
+
 /// The keys of the built-in spaces as help and errors list them:
 /// "acescg, aces2065-1, rec709, rec2020, p3-d65, ebu3213".
 std::string RgbSpaceChoices();

@@ -84,7 +84,7 @@ std::vector<Spectrum> MatchingFunctionsOf(MatchingSet set, Observer observer)
         return {cmf.x, cmf.y, cmf.z};
     }
     // r̄ḡb̄ = M_XYZ→RGB · x̄ȳz̄ (docs/science.md §1.2): the EBU RGB matching functions.
-    const Mat3 m = RgbToXyzMatrix(FindRgbSpace("ebu3213").chromaticities).inverse();
+    const Mat3 m = RgbToXyzMatrix(Ebu3213Space().chromaticities).inverse();
     std::vector<Spectrum> rgb = {cmf.x * m(0, 0), cmf.x * m(1, 0), cmf.x * m(2, 0)};
     for (int k = 0; k < 3; ++k)
     {

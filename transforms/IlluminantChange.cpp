@@ -57,7 +57,7 @@ BandBasis MakeBandBasis(const BandSet& bands, Observer observer)
 /// that white-preserving methods agree with the spectral reference exactly.
 Vec3 WhiteOf(const Light& light, Observer observer)
 {
-    const SurfaceRenderer r(light.spectrum, FindRgbSpace("acescg"), observer);
+    const SurfaceRenderer r(light.spectrum, AcesCgSpace(), observer);
     const Vec3 w = r.rgbToXyz() * r.white();
     if (!(w.y() > 0.0) || !w.allFinite())
     {

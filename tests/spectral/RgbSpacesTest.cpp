@@ -125,3 +125,15 @@ TEST_CASE("The space table: each name once, every alias found, choices in one sp
     }
     CHECK(RgbSpaceChoices() == "acescg, aces2065-1, rec709, rec2020, p3-d65, ebu3213");
 }
+
+TEST_CASE("The spaces code names are the registry's entries of those keys", "[spectral]")
+{
+    CHECK(&bandlight::Rec709Space() == &bandlight::FindRgbSpace("rec709"));
+    CHECK(&bandlight::Rec2020Space() == &bandlight::FindRgbSpace("rec2020"));
+    CHECK(&bandlight::AcesCgSpace() == &bandlight::FindRgbSpace("ap1"));
+    CHECK(&bandlight::Aces2065Space() == &bandlight::FindRgbSpace("ap0"));
+    CHECK(&bandlight::Ebu3213Space() == &bandlight::FindRgbSpace("ebu"));
+    // Rec.709's red primary (ITU-R BT.709-6, table 1): x 0.640, y 0.330.
+    CHECK(bandlight::Rec709Space().chromaticities.rx == Approx(0.640));
+    CHECK(bandlight::Rec709Space().chromaticities.ry == Approx(0.330));
+}
