@@ -22,12 +22,9 @@
 #include "cli/ImageCliHelpers.h"
 #include "cli/RunCommand.h"
 
-using Catch::Matchers::Contains;
-using Catch::Matchers::StartsWith;
+using namespace Catch::Matchers;
+using namespace bandlight::test;
 using namespace bandlight::test::image;
-using bandlight::test::Bandlight;
-using bandlight::test::Result;
-using bandlight::test::Sh;
 
 TEST_CASE("apply --from --to on a file with light groups relights every group and the residual",
           "[cli][lightgroups]")
