@@ -115,7 +115,7 @@ void FitPostOp(const WallSetup& setup, const WallCamera& camera, const WallScene
                  std::vector<double>(wallSamples.data(), wallSamples.data() + wallSamples.size()))};
     // The camera balanced once, for the light, and read through its IDT:
     // lit plates of rootpoly-plate with that light as the IDT's.
-    MethodSpec method = WithCamera(DefaultSpec(ChangeMethod::ROOTPOLY_PLATE),
+    MethodSpec method = WithCamera(ParseMethod(WallLookMethodName()),
                                    std::make_shared<const SpectralCamera>(setup.camera), light);
     method.training = setup.training;
     method.idt = camera.idt();
@@ -143,7 +143,7 @@ Statistics RegistryPostErrors(const WallSetup& setup, const WallCamera& camera,
         "the wall showing " + light.name,
         Spectrum(SurfaceRenderer::kStartNm, SurfaceRenderer::kStepNm,
                  std::vector<double>(wallSamples.data(), wallSamples.data() + wallSamples.size()))};
-    MethodSpec method = WithCamera(DefaultSpec(ChangeMethod::ROOTPOLY_CAMERA),
+    MethodSpec method = WithCamera(ParseMethod(WallComparisonMethodName()),
                                    std::make_shared<const SpectralCamera>(setup.camera), light);
     method.training = setup.training;
     method.plates = Plates{PlateConvention::BALANCED, setup.adaptation};

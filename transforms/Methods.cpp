@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cctype>
 #include <sstream>
-#include <stdexcept>
 
 #include "spectral/Exception.h"
 #include "spectral/TextFile.h"
@@ -295,6 +294,7 @@ void AddPixelMethods(std::vector<MethodEntry>& all)
     rootpolyCamera.needsCamera = true;
     rootpolyCamera.directForm = DirectForm::NATIVE;
     rootpolyCamera.cameraDefaults = {"rootpoly-camera"};
+    rootpolyCamera.wallComparisonDefaults = {"rootpoly-camera"};
     all.push_back(rootpolyCamera);
 
 }
@@ -452,37 +452,6 @@ MethodSpec ParseMethod(const std::string& name)
     throw Exception("unknown method '" + name + "' (" + choices + ")");
 }
 
-MethodSpec DefaultSpec(ChangeMethod method)
-{
-    // The first name of the entry's syntax that parses to this key: its
-    // default parameters, as a user who named it would get them.
-    const MethodEntry& entry = FindMethod(method);
-    const std::string syntax = entry.syntax;
-    size_t start = 0;
-    while (start < syntax.size())
-    {
-        const size_t end = std::min(syntax.find(',', start), syntax.size());
-        const std::string name = syntax.substr(start, end - start);
-        MethodSpec spec;
-        spec.name = name;
-        if (entry.parse(name, spec))
-        {
-            if (entry.methods.size() == 1)
-            {
-                spec.method = entry.methods.front();
-            }
-            if (spec.method == method)
-            {
-                return spec;
-            }
-        }
-        start = syntax.find_first_not_of(' ', end + 1);
-        start = start == std::string::npos ? syntax.size() : start;
-    }
-    throw std::logic_error(std::string("method entry '") + entry.syntax +
-                           "' names no default form of one of its keys");
-}
-
 const std::vector<std::string>& LinearMethodNames()
 {
     static const std::vector<std::string> names = Collect(&MethodEntry::configDefaults);
@@ -505,6 +474,18 @@ const std::vector<std::string>& LightGroupMethodNames()
 {
     static const std::vector<std::string> names = Collect(&MethodEntry::lightGroupDefaults);
     return names;
+}
+
+const std::string& WallLookMethodName()
+{
+    static const std::string name = Collect(&MethodEntry::wallLookDefaults).at(0);
+    return name;
+}
+
+const std::string& WallComparisonMethodName()
+{
+    static const std::string name = Collect(&MethodEntry::wallComparisonDefaults).at(0);
+    return name;
 }
 
 const char* MethodExactnessName(MethodExactness exactness)

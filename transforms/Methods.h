@@ -196,6 +196,11 @@ struct MethodEntry
     /// The names `accuracy --light-group` compares (one global look against
     /// a look per group) when no methods are named.
     std::vector<const char*> lightGroupDefaults;
+    /// The name of the op an LED wall's post-camera look is (a camera's
+    /// plates under one light to its plates under another), and of the
+    /// op aimed at the observer's colours it is compared with.
+    std::vector<const char*> wallLookDefaults;
+    std::vector<const char*> wallComparisonDefaults;
     /// The names whose looks `package` applies to its sample chart, and
     /// where they come in its list (1 first): the band model, then bradford.
     std::vector<const char*> packageDefaults;
@@ -219,12 +224,6 @@ const MethodEntry& FindMethod(const std::string& name);
 
 /// Parses a method name (case-insensitive); throws Exception listing the choices.
 MethodSpec ParseMethod(const std::string& name);
-
-/// A method by its key with its default parameters, as its first name in
-/// the entry's syntax gives them: how code outside transforms/methods/
-/// names a method without writing its name (rootpoly-plate is
-/// DefaultSpec(ChangeMethod::ROOTPOLY_PLATE)).
-MethodSpec DefaultSpec(ChangeMethod method);
 
 /// The name of the reference method (the exact spectral answer).
 std::string ReferenceMethodName();
@@ -262,6 +261,11 @@ const std::vector<std::string>& CameraMethodNames();
 /// The methods `accuracy --light-group` measures when none are named:
 /// bradford, cat02, fit3x3, rootpoly.
 const std::vector<std::string>& LightGroupMethodNames();
+
+/// The method an LED wall's post-camera look is (rootpoly-plate), and the
+/// one it is compared with (rootpoly-camera): `wall` names neither.
+const std::string& WallLookMethodName();
+const std::string& WallComparisonMethodName();
 
 /// The methods whose looks `package` applies to its sample chart: band3
 /// (the band model) and bradford.

@@ -51,30 +51,21 @@ TEST_CASE("Every registry entry has the builder its exactness needs", "[transfor
     CHECK(FindMethod(ReferenceMethodName()).isReference());
 }
 
-TEST_CASE("DefaultSpec gives each key its first name's parameters", "[transforms][methods]")
+TEST_CASE("The wall's two methods are named by their registry entries", "[transforms][methods]")
 {
-    for (const MethodEntry& e : Methods())
+    // The post-camera look maps a camera's plates to its own plates under
+    // another light; the comparison aims at the observer's colours. Both
+    // need the camera and are ops per pixel.
+    const MethodSpec look = ParseMethod(WallLookMethodName());
+    const MethodSpec comparison = ParseMethod(WallComparisonMethodName());
+    CHECK(look.name == "rootpoly-plate");
+    CHECK(comparison.name == "rootpoly-camera");
+    for (const MethodSpec* m : {&look, &comparison})
     {
-        for (ChangeMethod m : e.methods)
-        {
-            INFO(e.syntax);
-            const MethodSpec spec = DefaultSpec(m);
-            CHECK(spec.method == m);
-            // What a user naming it gets: the same key and parameters.
-            const MethodSpec parsed = ParseMethod(spec.name);
-            CHECK(parsed.method == m);
-            CHECK(parsed.name == spec.name);
-            CHECK(parsed.degree == spec.degree);
-            CHECK(parsed.whitePreserving == spec.whitePreserving);
-        }
+        CHECK(m->entry().needsCamera);
+        CHECK(m->entry().exactness == MethodExactness::NONLINEAR);
+        CHECK(m->degree == 2);
     }
-    // The defaults the wall and help texts rely on, by name.
-    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_PLATE).name == "rootpoly-plate");
-    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_PLATE).degree == 2);
-    CHECK(DefaultSpec(ChangeMethod::ROOTPOLY_CAMERA).name == "rootpoly-camera");
-    CHECK(DefaultSpec(ChangeMethod::BAND).name == "band3");
-    CHECK(DefaultSpec(ChangeMethod::BAND_WP).name == "band3-wp");
-    CHECK(DefaultSpec(ChangeMethod::BAND_WP).whitePreserving);
 }
 
 TEST_CASE("Every default name parses to its own entry and relights A to D65",

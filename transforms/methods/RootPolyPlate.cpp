@@ -158,6 +158,7 @@ MethodEntry RootPolyPlateMethod(ChangeMethod key)
     e.defaultTraining = &RootPolynomialTraining;
     e.takesTraining = true;
     e.needsCamera = true;
+    e.wallLookDefaults = {"rootpoly-plate"};
     return e;
 }
 
