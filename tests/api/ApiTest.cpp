@@ -105,3 +105,27 @@ TEST_CASE("api: errors are the command's one line, the registry its list", "[api
     CHECK(methods.front().names == bandlight::jobs::ListMethods().front().names);
     CHECK(bandlight::Version() == BANDLIGHT_VERSION);
 }
+
+TEST_CASE("api: what hosts get wrong is refused before any work, nothing written", "[api]")
+{
+    const std::string dir = bandlight::test::Fresh("api_mistakes");
+    fs::create_directories(dir);
+    bandlight::ChangeOfLight change;
+    change.from = "A";
+    change.to = "D65";
+    // An empty path, a folder where the LUT file goes, a format the path's
+    // extension does not name, a light that is no light.
+    CHECK_THROWS_AS(bandlight::WriteLut(change, ""), std::runtime_error);
+    CHECK_THROWS_AS(bandlight::WriteLut(change, dir), std::runtime_error);
+    bandlight::LutSettings cube;
+    cube.format = "cube";
+    CHECK_THROWS_AS(bandlight::WriteLut(change, dir + "/x.clf", cube), std::runtime_error);
+    bandlight::ChangeOfLight dark = change;
+    dark.to = dir + "/missing.csv";
+    CHECK_THROWS_WITH(bandlight::MakeTransform(dark), Contains("missing.csv"));
+    // A config needs its folder; images need a look of the config.
+    CHECK_THROWS_AS(bandlight::WriteConfig({}), std::runtime_error);
+    CHECK_THROWS_AS(bandlight::ApplyLook(dir + "/in.exr", dir + "/out.exr", dir, "no_look"),
+                    std::runtime_error);
+    CHECK(fs::is_empty(dir));
+}
